@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+// `lookahead config --dump`: the documented defaults, the source of config/slam/default.yaml.
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "lookahead/slam/config/slam_config.hpp"
+
+namespace lookahead::app {
+
+Run add_config_command(CLI::App& app) {
+  auto check = std::make_shared<std::string>();
+  app.add_flag("--dump", "print the default SLAM configuration (YAML)");
+  app.add_option("--check", *check, "load a YAML config and report the first error");
+  return [check] {
+    if (!check->empty()) {
+      slam::load_rbpf_options(*check);
+      fmt::print("{}: ok\n", *check);
+      return 0;
+    }
+    fmt::print("# lookahead SLAM defaults (lookahead config --dump)\n{}", slam::dump_rbpf_options({}));
+    return 0;
+  };
+}
+
+}  // namespace lookahead::app

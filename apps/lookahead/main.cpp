@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// `lookahead`: exploration and mapping with structure prediction. See README.md.
+#include <spdlog/spdlog.h>
+
+#include <exception>
+#include <map>
+
+#include "commands.hpp"
+#include "lookahead/slam/io/parse_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"lookahead: RBPF grid SLAM, exploration and structure prediction"};
+  app.require_subcommand(1);
+  std::map<CLI::App*, lookahead::app::Run> runs;
+  auto add = [&](const char* name, const char* help, auto&& make) {
+    CLI::App* sub = app.add_subcommand(name, help);
+    runs[sub] = make(*sub);
+  };
+  add("slam", "map a laser log (CARMEN or MRPT rawlog) with the RBPF", lookahead::app::add_slam_command);
+  add("eval", "relative pose error of a trajectory; entropy of a map", lookahead::app::add_eval_command);
+  add("config", "print the documented default configuration", lookahead::app::add_config_command);
+  CLI11_PARSE(app, argc, argv);
+  try {
+    for (auto& [sub, run] : runs) {
+      if (sub->parsed()) return run();
+    }
+  } catch (const lookahead::slam::ParseError& e) {
+    spdlog::error("{}", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// The improved proposal of Grisetti, Stachniss, Burgard (IEEE T-RO 2007), sec. III-A/B:
+// around the scan-matched mode x^ draw K poses x_j, evaluate
+//   tau(x_j) = p(z_t | m, x_j) p(x_j | x_{t-1}, u_t)                        (eq. 11)
+// and fit a Gaussian
+//   mu    = 1/eta sum_j x_j tau(x_j)                                        (eq. 12)
+//   Sigma = 1/eta sum_j tau(x_j) (x_j - mu)(x_j - mu)^T                     (eq. 13)
+//   eta   = sum_j tau(x_j)                                                  (eq. 14)
+// The new pose is sampled from N(mu, Sigma) and the weight is multiplied by eta (eq. 16).
+// GMapping's released code takes mu itself instead of sampling; we sample, as published.
+#pragma once
+
+#include <random>
+
+#include "lookahead/slam/geometry/pose2.hpp"
+#include "lookahead/slam/grid/occupancy_grid.hpp"
+#include "lookahead/slam/rbpf/motion_model.hpp"
+#include "lookahead/slam/sensor/likelihood_field_model.hpp"
+
+namespace lookahead::slam {
+
+struct ProposalOptions {
+  double kernel_linear = 0.025;   ///< spacing of the K = 27 points in x and y [m]
+  double kernel_angular = 0.0125; ///< spacing in theta [rad]
+  /// Floor on the fitted standard deviations, a fraction of the kernel spacing: a likelihood
+  /// peaked on one kernel point would otherwise give a zero covariance.
+  double min_sigma_fraction = 0.25;
+};
+
+struct ProposalDraw {
+  Pose2 pose;             ///< x_t^(i) ~ N(mu, Sigma)
+  Pose2 mean;             ///< mu
+  double log_eta = 0.0;   ///< log of the weight factor eta
+};
+
+ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous,
+                                    const Pose2& u, const Pose2& mode, const PreparedScan& scan,
+                                    const LikelihoodFieldModel& likelihood,
+                                    const OdometryMotionModel& motion,
+                                    const ProposalOptions& options, std::mt19937_64& rng);
+
+}  // namespace lookahead::slam

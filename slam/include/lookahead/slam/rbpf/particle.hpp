@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// One hypothesis of the RBPF: a pose, a map (copy-on-write, shared with its relatives), a
+// log weight and its trajectory, a chain of nodes shared with its ancestors.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+
+#include "lookahead/slam/geometry/pose2.hpp"
+#include "lookahead/slam/grid/occupancy_grid.hpp"
+
+namespace lookahead::slam {
+
+struct TrajectoryNode {
+  Pose2 pose;
+  std::size_t scan_index = 0;  ///< the scan this pose belongs to
+  std::shared_ptr<const TrajectoryNode> parent;
+
+  TrajectoryNode(const Pose2& p, std::size_t scan, std::shared_ptr<const TrajectoryNode> up)
+      : pose(p), scan_index(scan), parent(std::move(up)) {}
+  // Unlinks the chain iteratively: a recursive release of thousands of nodes could overflow
+  // the stack of a worker thread.
+  ~TrajectoryNode();
+  TrajectoryNode(const TrajectoryNode&) = delete;
+  TrajectoryNode& operator=(const TrajectoryNode&) = delete;
+};
+
+struct Particle {
+  Pose2 pose;
+  OccupancyGrid map;
+  double log_weight = 0.0;
+  std::shared_ptr<const TrajectoryNode> trajectory;
+};
+
+}  // namespace lookahead::slam

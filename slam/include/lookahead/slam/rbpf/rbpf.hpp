@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// Rao-Blackwellized particle filter for grid SLAM with the improved proposal and selective
+// resampling: Grisetti, Stachniss, Burgard, "Improved techniques for grid mapping with
+// Rao-Blackwellized particle filters", IEEE T-RO 23(1), 2007, sec. III-IV.
+#pragma once
+
+#include <cstddef>
+#include <random>
+#include <vector>
+
+#include "lookahead/slam/rbpf/motion_model.hpp"
+#include "lookahead/slam/rbpf/particle.hpp"
+#include "lookahead/slam/rbpf/rbpf_options.hpp"
+#include "lookahead/slam/rbpf/scan_matcher.hpp"
+#include "lookahead/slam/sensor/laser_scan.hpp"
+#include "lookahead/slam/sensor/likelihood_field_model.hpp"
+
+namespace lookahead::slam {
+
+struct RbpfStatistics {
+  std::size_t scans = 0;
+  std::size_t updates = 0;           ///< scans that ran the filter (motion threshold met)
+  std::size_t resamplings = 0;
+  std::size_t match_failures = 0;    ///< particle updates that fell back to odometry
+  std::size_t particle_updates = 0;
+  std::vector<double> neff;          ///< N_eff after each update
+};
+
+class Rbpf {
+ public:
+  explicit Rbpf(const RbpfOptions& options);
+
+  /// Feeds one scan (in time order). Returns true when the filter ran an update on it.
+  bool add_scan(const LaserScan& scan);
+
+  [[nodiscard]] const std::vector<Particle>& particles() const { return particles_; }
+  [[nodiscard]] std::size_t best_particle() const;
+  /// The best particle's pose for every scan added so far (scans between updates are placed
+  /// by odometry relative to the last updated pose).
+  [[nodiscard]] std::vector<Pose2> best_trajectory() const;
+  [[nodiscard]] const std::vector<double>& timestamps() const { return timestamps_; }
+  [[nodiscard]] const std::vector<Pose2>& odometry() const { return odometry_; }
+  [[nodiscard]] const RbpfStatistics& statistics() const { return stats_; }
+  [[nodiscard]] const RbpfOptions& options() const { return options_; }
+
+ private:
+  void initialize(const LaserScan& scan);
+  bool motion_threshold_met(const LaserScan& scan) const;
+  void update_particle(Particle& p, const Pose2& u, const LaserScan& scan,
+                       const PreparedScan& prepared, std::mt19937_64& rng, bool& failed) const;
+  void update_particles(const LaserScan& scan);
+  void resample_if_needed();
+
+  RbpfOptions options_;
+  OdometryMotionModel motion_;
+  OccupancyGrid prototype_grid_;
+  LikelihoodFieldModel likelihood_;
+  ScanMatcher matcher_;
+  std::vector<Particle> particles_;
+  std::mt19937_64 rng_;
+  Pose2 last_update_odometry_;
+  std::vector<double> timestamps_;
+  std::vector<Pose2> odometry_;
+  RbpfStatistics stats_;
+};
+
+}  // namespace lookahead::slam

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/rbpf/improved_proposal.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <array>
+#include <cmath>
+
+namespace lookahead::slam {
+
+ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous,
+                                    const Pose2& u, const Pose2& mode, const PreparedScan& scan,
+                                    const LikelihoodFieldModel& likelihood,
+                                    const OdometryMotionModel& motion,
+                                    const ProposalOptions& options, std::mt19937_64& rng) {
+  // K = 27 points on a 3x3x3 lattice centred on the mode; offsets kept relative to the mode
+  // so angles never wrap inside the sums.
+  std::array<Eigen::Vector3d, 27> offsets;
+  std::array<double, 27> log_tau;
+  int k = 0;
+  double max_log = -INFINITY;
+  for (int i = -1; i <= 1; ++i) {
+    for (int j = -1; j <= 1; ++j) {
+      for (int a = -1; a <= 1; ++a, ++k) {
+        offsets[k] = {i * options.kernel_linear, j * options.kernel_linear, a * options.kernel_angular};
+        const Pose2 x{mode.x + offsets[k].x(), mode.y + offsets[k].y(),
+                      normalize_angle(mode.theta + offsets[k].z())};
+        log_tau[k] = likelihood.log_likelihood(grid, x, scan) + motion.log_density(previous, u, x);
+        max_log = std::max(max_log, log_tau[k]);
+      }
+    }
+  }
+  double eta = 0.0;  // scaled by exp(-max_log) to stay in range
+  Eigen::Vector3d mu = Eigen::Vector3d::Zero();
+  for (int j = 0; j < 27; ++j) {
+    const double tau = std::exp(log_tau[j] - max_log);
+    eta += tau;
+    mu += tau * offsets[j];
+  }
+  mu /= eta;
+  Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+  for (int j = 0; j < 27; ++j) {
+    const Eigen::Vector3d d = offsets[j] - mu;
+    sigma += std::exp(log_tau[j] - max_log) * d * d.transpose();
+  }
+  sigma /= eta;
+  const double fl = options.min_sigma_fraction * options.kernel_linear;
+  const double fa = options.min_sigma_fraction * options.kernel_angular;
+  sigma += Eigen::Vector3d(fl * fl, fl * fl, fa * fa).asDiagonal();
+
+  const Eigen::Matrix3d l = sigma.llt().matrixL();
+  std::normal_distribution<double> n(0.0, 1.0);
+  const Eigen::Vector3d z(n(rng), n(rng), n(rng));
+  const Eigen::Vector3d draw = mu + l * z;
+
+  ProposalDraw out;
+  out.mean = {mode.x + mu.x(), mode.y + mu.y(), normalize_angle(mode.theta + mu.z())};
+  out.pose = {mode.x + draw.x(), mode.y + draw.y(), normalize_angle(mode.theta + draw.z())};
+  out.log_eta = max_log + std::log(eta);
+  return out;
+}
+
+}  // namespace lookahead::slam

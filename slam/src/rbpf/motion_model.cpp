@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/rbpf/motion_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace lookahead::slam {
+
+OdometryMotionModel::OdometryMotionModel(const MotionModelOptions& options) : o_(options) {
+  if (o_.srr < 0 || o_.srt < 0 || o_.str < 0 || o_.stt < 0 || !(o_.min_sigma_xy > 0) ||
+      !(o_.min_sigma_theta > 0)) {
+    throw std::invalid_argument("motion model: noise terms must be >= 0 and floors > 0");
+  }
+}
+
+void OdometryMotionModel::sigmas(const Pose2& u, double& sx, double& sy, double& st) const {
+  const double sxy = 0.3 * o_.srr;
+  const double ax = std::abs(u.x), ay = std::abs(u.y), at = std::abs(u.theta);
+  sx = std::max(o_.min_sigma_xy, o_.srr * ax + o_.str * at + sxy * ay);
+  sy = std::max(o_.min_sigma_xy, o_.srr * ay + o_.str * at + sxy * ax);
+  st = std::max(o_.min_sigma_theta, o_.stt * at + o_.srt * std::hypot(u.x, u.y));
+}
+
+Pose2 OdometryMotionModel::sample(const Pose2& previous, const Pose2& u,
+                                  std::mt19937_64& rng) const {
+  double sx, sy, st;
+  sigmas(u, sx, sy, st);
+  std::normal_distribution<double> n(0.0, 1.0);
+  const Pose2 noisy{u.x + sx * n(rng), u.y + sy * n(rng), u.theta + st * n(rng)};
+  return previous.compose(noisy);
+}
+
+double OdometryMotionModel::log_density(const Pose2& previous, const Pose2& u,
+                                        const Pose2& x) const {
+  double sx, sy, st;
+  sigmas(u, sx, sy, st);
+  const Pose2 d = previous.between(x);
+  const double ex = (d.x - u.x) / sx;
+  const double ey = (d.y - u.y) / sy;
+  const double et = normalize_angle(d.theta - u.theta) / st;
+  return -0.5 * (ex * ex + ey * ey + et * et);
+}
+
+}  // namespace lookahead::slam

@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/rbpf/rbpf.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/rbpf/improved_proposal.hpp"
+#include "lookahead/slam/rbpf/resampler.hpp"
+
+namespace lookahead::slam {
+namespace {
+
+// A reproducible, well-mixed seed for (run seed, update, particle): draws do not depend on
+// which thread runs which particle.
+std::uint64_t mix_seed(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+  std::uint64_t z = a ^ (b * 0x9E3779B97F4A7C15ull) ^ (c * 0xC2B2AE3D27D4EB4Full);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+void validate(const RbpfOptions& o) {
+  if (o.particles < 1 || o.particles > 100000) throw std::invalid_argument("particles in 1..100000");
+  if (!(o.resample_threshold > 0 && o.resample_threshold <= 1)) {
+    throw std::invalid_argument("resample_threshold in (0, 1]");
+  }
+  if (o.linear_update < 0 || o.angular_update < 0) throw std::invalid_argument("update thresholds >= 0");
+  if (o.threads < 0) throw std::invalid_argument("threads >= 0");
+}
+
+}  // namespace
+
+Rbpf::Rbpf(const RbpfOptions& options)
+    : options_((validate(options), options)),
+      motion_(options.motion),
+      prototype_grid_(options.grid),
+      likelihood_(options.likelihood, prototype_grid_),
+      matcher_(options.matcher, likelihood_),
+      rng_(mix_seed(options.seed, 0xABCDEFull, 0)) {}
+
+bool Rbpf::add_scan(const LaserScan& scan) {
+  timestamps_.push_back(scan.timestamp);
+  odometry_.push_back(scan.odometry);
+  ++stats_.scans;
+  if (particles_.empty()) {
+    initialize(scan);
+    return true;
+  }
+  if (!motion_threshold_met(scan)) return false;
+  update_particles(scan);  // Grisetti et al. sec. IV steps 1-4: proposal, weights, map
+  resample_if_needed();    // step 5: selective resampling
+  last_update_odometry_ = scan.odometry;
+  return true;
+}
+
+void Rbpf::initialize(const LaserScan& scan) {
+  // The map frame is the odometry frame at the first scan, so maps and odometry overlay.
+  Particle p{scan.odometry, prototype_grid_, 0.0, nullptr};
+  insert_scan(p.map, p.pose, scan, options_.insert);
+  p.trajectory = std::make_shared<TrajectoryNode>(p.pose, 0, nullptr);
+  particles_.assign(static_cast<std::size_t>(options_.particles), p);
+  last_update_odometry_ = scan.odometry;
+  stats_.updates = 1;
+  stats_.neff.push_back(static_cast<double>(options_.particles));
+}
+
+bool Rbpf::motion_threshold_met(const LaserScan& scan) const {
+  const Pose2 moved = last_update_odometry_.between(scan.odometry);
+  return moved.norm() >= options_.linear_update ||
+         std::abs(moved.theta) >= options_.angular_update;
+}
+
+void Rbpf::update_particle(Particle& p, const Pose2& u, const LaserScan& scan,
+                           const PreparedScan& prepared, std::mt19937_64& rng,
+                           bool& failed) const {
+  const Pose2 predicted = p.pose.compose(u);
+  const bool warm = stats_.updates > static_cast<std::size_t>(options_.warmup_updates);
+  MatchResult m;
+  if (warm) m = matcher_.match(p.map, predicted, prepared);
+  if (warm && m.ok) {
+    const ProposalDraw d = draw_improved_proposal(p.map, p.pose, u, m.pose, prepared, likelihood_,
+                                                  motion_, options_.proposal, rng);
+    p.pose = d.pose;
+    p.log_weight += d.log_eta;
+  } else {
+    // No usable match: sample the odometry model and weight by the observation (the
+    // standard proposal), as Grisetti et al. do when scan matching fails.
+    p.pose = motion_.sample(p.pose, u, rng);
+    if (warm) p.log_weight += likelihood_.log_likelihood(p.map, p.pose, prepared);
+    failed = warm;
+  }
+  insert_scan(p.map, p.pose, scan, options_.insert);
+  p.trajectory = std::make_shared<TrajectoryNode>(p.pose, timestamps_.size() - 1, p.trajectory);
+}
+
+void Rbpf::update_particles(const LaserScan& scan) {
+  const Pose2 u = last_update_odometry_.between(scan.odometry);
+  const PreparedScan prepared = prepare_scan(scan, options_.likelihood);
+  const int n = static_cast<int>(particles_.size());
+  const int threads = options_.threads > 0 ? options_.threads : omp_get_num_procs();
+  std::vector<char> failed(particles_.size(), 0);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int i = 0; i < n; ++i) {
+    std::mt19937_64 rng(mix_seed(options_.seed, stats_.updates, static_cast<std::uint64_t>(i)));
+    bool f = false;
+    update_particle(particles_[static_cast<std::size_t>(i)], u, scan, prepared, rng, f);
+    failed[static_cast<std::size_t>(i)] = f ? 1 : 0;
+  }
+  stats_.match_failures += static_cast<std::size_t>(std::count(failed.begin(), failed.end(), 1));
+  stats_.particle_updates += particles_.size();
+  ++stats_.updates;
+}
+
+void Rbpf::resample_if_needed() {
+  std::vector<double> logw(particles_.size());
+  for (std::size_t i = 0; i < particles_.size(); ++i) logw[i] = particles_[i].log_weight;
+  const std::vector<double> w = normalized_weights(logw);
+  const double neff = effective_sample_size(w);
+  stats_.neff.push_back(neff);
+  // Keep log weights small and comparable: subtract the max (does not change the ratios).
+  const double max_logw = *std::max_element(logw.begin(), logw.end());
+  for (Particle& p : particles_) p.log_weight -= max_logw;
+  if (neff >= options_.resample_threshold * static_cast<double>(particles_.size())) return;
+  const std::vector<std::size_t> keep = low_variance_resample(w, rng_);
+  std::vector<Particle> next;
+  next.reserve(particles_.size());
+  for (const std::size_t k : keep) next.push_back(particles_[k]);  // copies tile handles only
+  for (Particle& p : next) p.log_weight = 0.0;
+  particles_ = std::move(next);
+  ++stats_.resamplings;
+}
+
+std::size_t Rbpf::best_particle() const {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < particles_.size(); ++i) {
+    if (particles_[i].log_weight > particles_[best].log_weight) best = i;
+  }
+  return best;
+}
+
+std::vector<Pose2> Rbpf::best_trajectory() const {
+  std::vector<Pose2> out(timestamps_.size());
+  if (particles_.empty()) return out;
+  std::vector<const TrajectoryNode*> nodes;
+  for (const TrajectoryNode* n = particles_[best_particle()].trajectory.get(); n; n = n->parent.get()) {
+    nodes.push_back(n);
+  }
+  std::reverse(nodes.begin(), nodes.end());
+  std::size_t k = 0;
+  for (std::size_t s = 0; s < out.size(); ++s) {
+    while (k + 1 < nodes.size() && nodes[k + 1]->scan_index <= s) ++k;
+    const TrajectoryNode& anchor = *nodes[k];
+    // Between updates: the anchor pose moved by the odometry since the anchor's scan.
+    out[s] = anchor.pose.compose(odometry_[anchor.scan_index].between(odometry_[s]));
+  }
+  return out;
+}
+
+}  // namespace lookahead::slam
