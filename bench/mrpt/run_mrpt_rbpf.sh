@@ -40,7 +40,8 @@ fi
 # The converter: given, or built standalone (incremental after the first time).
 BIN=${CARMEN_TO_RAWLOG:-}
 if [[ -z $BIN ]]; then
-  BUILD=${TMPDIR:-/tmp}/lookahead-bench-mrpt-build
+  # One build folder per source folder: CMake refuses to reuse one for another checkout.
+  BUILD=${TMPDIR:-/tmp}/lookahead-bench-mrpt-$(printf %s "$HERE" | cksum | cut -d' ' -f1)
   cmake -S "$HERE" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
   cmake --build "$BUILD" --target carmen_to_rawlog >/dev/null
   BIN=$BUILD/carmen_to_rawlog

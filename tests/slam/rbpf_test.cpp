@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/rbpf/rbpf.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "test_world.hpp"
+
+namespace lookahead::slam {
+namespace {
+
+// A drive around the inner box of the test room with odometry that drifts in heading.
+std::vector<std::pair<Pose2, LaserScan>> drive() {
+  const auto world = test::room_world();
+  std::vector<std::pair<Pose2, LaserScan>> out;
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> n(0.0, 1.0);
+  Pose2 truth{1.5, 1.0, 0.0}, odom = truth;
+  const std::vector<Pose2> legs{{7.0, 0, 0}, {0, 0, M_PI / 2}, {3.5, 0, 0}, {0, 0, M_PI / 2},
+                                {6.5, 0, 0}, {0, 0, M_PI / 2}, {3.2, 0, 0}};
+  double t = 0;
+  for (const Pose2& leg : legs) {
+    const int steps = leg.x > 0 ? static_cast<int>(leg.x / 0.1) : 10;
+    for (int i = 0; i < steps; ++i) {
+      const Pose2 step{leg.x / steps, 0, leg.theta / steps};
+      truth = truth.compose(step);
+      // Odometry: 3% scale error and a heading drift of 2 degrees per metre.
+      odom = odom.compose({step.x * 1.03 + 0.002 * n(rng), 0.002 * n(rng),
+                           step.theta * 1.02 + step.x * 0.035});
+      out.push_back({truth, test::simulate_scan(world, truth, odom, t += 0.1)});
+    }
+  }
+  return out;
+}
+
+RbpfOptions small(int threads) {
+  RbpfOptions o;
+  o.particles = 20;
+  o.seed = 3;
+  o.threads = threads;
+  o.linear_update = 0.3;
+  return o;
+}
+
+TEST(Rbpf, CorrectsDriftingOdometry) {
+  const auto data = drive();
+  Rbpf filter(small(1));
+  for (const auto& d : data) filter.add_scan(d.second);
+  const auto path = filter.best_trajectory();
+  const Pose2 truth = data.back().first;
+  const Pose2 odom = data.back().second.odometry;
+  const double odom_error = std::hypot(odom.x - truth.x, odom.y - truth.y);
+  const double slam_error = std::hypot(path.back().x - truth.x, path.back().y - truth.y);
+  EXPECT_GT(odom_error, 0.5);
+  EXPECT_LT(slam_error, 0.1);
+  EXPECT_LT(std::abs(normalize_angle(path.back().theta - truth.theta)), 0.03);
+  EXPECT_GT(filter.statistics().updates, 50u);
+}
+
+TEST(Rbpf, SameSeedSameResultWhateverTheThreadCount) {
+  const auto data = drive();
+  Rbpf one(small(1)), two(small(2));
+  for (const auto& d : data) {
+    one.add_scan(d.second);
+    two.add_scan(d.second);
+  }
+  const auto a = one.best_trajectory(), b = two.best_trajectory();
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].x, b[i].x);
+    ASSERT_EQ(a[i].y, b[i].y);
+    ASSERT_EQ(a[i].theta, b[i].theta);
+  }
+  EXPECT_EQ(one.statistics().neff, two.statistics().neff);
+}
+
+TEST(Rbpf, WaitsForTheMotionThreshold) {
+  Rbpf filter(small(1));
+  const auto world = test::room_world();
+  const Pose2 p{2, 1, 0};
+  EXPECT_TRUE(filter.add_scan(test::simulate_scan(world, p, p)));
+  EXPECT_FALSE(filter.add_scan(test::simulate_scan(world, p, {2.1, 1, 0})));
+  EXPECT_TRUE(filter.add_scan(test::simulate_scan(world, p, {2.4, 1, 0})));
+  EXPECT_EQ(filter.best_trajectory().size(), 3u);
+}
+
+TEST(Rbpf, RejectsImpossibleOptions) {
+  RbpfOptions o;
+  o.particles = 0;
+  EXPECT_THROW(Rbpf{o}, std::invalid_argument);
+  o = {};
+  o.resample_threshold = 1.5;
+  EXPECT_THROW(Rbpf{o}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace lookahead::slam

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/rbpf/scan_matcher.hpp"
+
+#include <gtest/gtest.h>
+
+#include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/rbpf/improved_proposal.hpp"
+#include "test_world.hpp"
+
+namespace lookahead::slam {
+namespace {
+
+class ScanMatcherTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto world = test::room_world();
+    // Map from three exact scans, then a scan from a pose the matcher must find.
+    for (const Pose2& p : {Pose2{1.5, 1.0, 0.3}, Pose2{8.5, 1.5, 2.0}, Pose2{2.0, 5.0, -0.8}}) {
+      insert_scan(grid, p, test::simulate_scan(world, p, p), {});
+    }
+    scan = prepare_scan(test::simulate_scan(world, truth, truth), LikelihoodOptions{});
+  }
+  OccupancyGrid grid;
+  Pose2 truth{6.0, 1.2, 0.7};
+  PreparedScan scan;
+  LikelihoodFieldModel model{LikelihoodOptions{}, grid};
+};
+
+TEST_F(ScanMatcherTest, LikelihoodPeaksAtTheTruePose) {
+  const double at_truth = model.log_likelihood(grid, truth, scan);
+  EXPECT_GT(at_truth, model.log_likelihood(grid, {truth.x + 0.1, truth.y, truth.theta}, scan));
+  EXPECT_GT(at_truth, model.log_likelihood(grid, {truth.x, truth.y - 0.1, truth.theta}, scan));
+  EXPECT_GT(at_truth, model.log_likelihood(grid, {truth.x, truth.y, truth.theta + 0.05}, scan));
+}
+
+TEST_F(ScanMatcherTest, RecoversAnOdometryError) {
+  const ScanMatcher matcher(ScanMatcherOptions{}, model);
+  const MatchResult r = matcher.match(grid, {truth.x + 0.15, truth.y - 0.1, truth.theta + 0.06}, scan);
+  EXPECT_TRUE(r.ok);
+  EXPECT_NEAR(r.pose.x, truth.x, 0.03);
+  EXPECT_NEAR(r.pose.y, truth.y, 0.03);
+  EXPECT_NEAR(r.pose.theta, truth.theta, 0.01);
+  EXPECT_GT(r.hit_ratio, 0.8);
+}
+
+TEST_F(ScanMatcherTest, FailsWhenTheScanDoesNotFitTheMap) {
+  const ScanMatcher matcher(ScanMatcherOptions{}, model);
+  const PreparedScan wrong = prepare_scan(
+      test::simulate_scan({{0, 0, 1, 0}, {1, 0, 1, 1}}, {0.5, 0.5, 0}, {}), LikelihoodOptions{});
+  EXPECT_FALSE(matcher.match(grid, truth, wrong).ok);
+}
+
+TEST_F(ScanMatcherTest, ProposalIsNarrowAroundTheMode) {
+  const OdometryMotionModel motion;
+  std::mt19937_64 rng(5);
+  const Pose2 u{0.5, 0.0, 0.1};
+  const Pose2 previous = truth.compose(u.inverse());
+  double sx = 0, sy = 0;
+  for (int i = 0; i < 50; ++i) {
+    const ProposalDraw d = draw_improved_proposal(grid, previous, u, truth, scan, model, motion, {}, rng);
+    ASSERT_TRUE(std::isfinite(d.log_eta));
+    sx += (d.pose.x - truth.x) * (d.pose.x - truth.x);
+    sy += (d.pose.y - truth.y) * (d.pose.y - truth.y);
+  }
+  // Far tighter than the odometry model's ~5 cm for a 0.5 m step.
+  EXPECT_LT(std::sqrt(sx / 50), 0.03);
+  EXPECT_LT(std::sqrt(sy / 50), 0.03);
+}
+
+}  // namespace
+}  // namespace lookahead::slam
