@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "lookahead/slam/eval/absolute_error.hpp"
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/eval/relative_error.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
@@ -33,9 +34,21 @@ int run_eval(const EvalArgs& a) {
   if (!a.trajectory.empty()) {
     const auto trajectory = slam::read_trajectory(a.trajectory);
     std::vector<slam::Relation> relations;
-    if (!a.relations.empty()) relations = slam::read_relations(a.relations);
-    else if (!a.reference_log.empty()) relations = slam::relations_from_reference(reference_from_log(a.reference_log));
-    else throw std::runtime_error("eval: --trajectory needs --relations or --reference-log");
+    if (!a.relations.empty()) {
+      relations = slam::read_relations(a.relations);
+    } else if (!a.reference_log.empty()) {
+      const auto reference = reference_from_log(a.reference_log);
+      relations = slam::relations_from_reference(reference);
+      const slam::AbsoluteError ate = slam::absolute_trajectory_error(reference, trajectory, a.tolerance);
+      fmt::print("absolute error after SE(2) alignment: RMSE {:.3f} m, mean {:.3f} m, max {:.3f} m "
+                 "({} poses matched)\n", ate.rmse, ate.mean, ate.max, ate.matched);
+      j["ate_rmse_m"] = ate.rmse;
+      j["ate_mean_m"] = ate.mean;
+      j["ate_max_m"] = ate.max;
+      j["ate_matched"] = ate.matched;
+    } else {
+      throw std::runtime_error("eval: --trajectory needs --relations or --reference-log");
+    }
     const slam::RelativeError e = slam::relative_error(relations, trajectory, a.tolerance);
     fmt::print("relative error: translation {:.3f} +- {:.3f} m, rotation {:.2f} +- {:.2f} deg "
                "({} relations used, {} without a matching pose)\n",

@@ -3,6 +3,7 @@
 // trajectory.txt and run.json.
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -56,6 +57,13 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   std::vector<slam::StampedPose> stamped;
   for (std::size_t i = 0; i < path.size(); ++i) stamped.push_back({filter.timestamps()[i], path[i]});
   slam::write_trajectory(a.out + "/trajectory.txt", stamped);
+  // CARMEN logs carry a second clock; GMapping's corrected logs print that one, so a copy on
+  // it lets `lookahead eval --reference-log X.gfs.log` pair the poses.
+  if (std::any_of(log.scans.begin(), log.scans.end(),
+                  [](const auto& s) { return s.logger_timestamp != s.timestamp; })) {
+    for (std::size_t i = 0; i < stamped.size(); ++i) stamped[i].t = log.scans[i].logger_timestamp;
+    slam::write_trajectory(a.out + "/trajectory_logger_time.txt", stamped);
+  }
   slam::write_map_picture(a.out + "/map.png", map,
                           {{filter.odometry(), {230, 140, 20}, "odometry", 1},
                            {path, {200, 30, 30}, "RBPF estimate (best particle)", 2}},

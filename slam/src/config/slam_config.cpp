@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/config/slam_config.hpp"
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <fstream>
@@ -8,6 +9,7 @@
 #include <sstream>
 
 #include "lookahead/slam/io/parse_error.hpp"
+#include "lookahead/slam/rbpf/rbpf.hpp"
 
 namespace lookahead::slam {
 namespace {
@@ -65,7 +67,9 @@ class Loader {
  public:
   Loader(const YAML::Node& root, std::string source) : root_(root), source_(std::move(source)) {}
   void section(const char* name) {
-    current_ = root_[name];
+    // reset(), not operator=: assigning to a yaml-cpp Node writes through to the node it
+    // refers to (the previous section) instead of rebinding.
+    current_.reset(root_[name]);
     name_ = name;
     if (current_ && !current_.IsMap()) fail(current_, name, "must be a map");
     if (current_) seen_sections_.insert(name);
@@ -108,9 +112,8 @@ class Dumper {
   void section(const char* name) { out_ << name << ":\n"; }
   template <typename T>
   void operator()(const char* key, const T& field, const char* doc) {
-    YAML::Emitter e;
-    e << field;
-    out_ << "  " << key << ": " << e.c_str() << "  # " << doc << "\n";
+    // fmt prints the shortest text that reads back to the same value (0.05, not 0.0500...01).
+    out_ << "  " << key << ": " << fmt::format("{}", field) << "  # " << doc << "\n";
   }
   std::string str() const { return out_.str(); }
 
@@ -134,6 +137,11 @@ RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& sourc
   Loader loader(root, source);
   visit_sections(o, loader);
   loader.reject_unknown();
+  try {
+    const Rbpf check(o);  // the components validate their own options; no particles yet
+  } catch (const std::invalid_argument& e) {
+    throw ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+  }
   return o;
 }
 

@@ -62,6 +62,7 @@ void flaser_geometry(const ReaderState& s, LaserScan& scan) {
 }
 
 double ipc_time(const Fields& f) { return f.number(f.size() - 3, "ipc_timestamp"); }
+double logger_time(const Fields& f) { return f.number(f.size() - 1, "logger_timestamp"); }
 
 void parse_flaser(const Fields& f, ReaderState& s, const LogReadOptions& o, bool rear) {
   f.require(2, "num_readings");
@@ -74,6 +75,7 @@ void parse_flaser(const Fields& f, ReaderState& s, const LogReadOptions& o, bool
   scan.odometry = {f.number(p + 3, "odom_x"), f.number(p + 4, "odom_y"),
                    normalize_angle(f.number(p + 5, "odom_theta"))};
   scan.timestamp = ipc_time(f);
+  scan.logger_timestamp = logger_time(f);
   // The laser pose on the line already includes the mounting offset: recover it.
   scan.laser_offset = scan.odometry.between(laser);
   if (scan.laser_offset.norm() > 2.0) scan.laser_offset = Pose2{};  // not odometry-based
@@ -106,10 +108,10 @@ std::size_t parse_laser_head(const Fields& f, const LogReadOptions& o, LaserScan
 void parse_robotlaser(const Fields& f, ReaderState& s, const LogReadOptions& o) {
   LaserScan scan;
   const std::size_t p = parse_laser_head(f, o, scan);
-  // Older writers leave out turn_axis: 14 trailing fields instead of 15.
+  // Older writers leave out turn_axis: 13 trailing fields instead of 14.
   const std::size_t trailing = f.size() >= p ? f.size() - p : 0;
-  if (trailing != 14 && trailing != 15) {
-    f.fail("trailing fields", std::to_string(trailing), "expected 14 or 15 after the remissions");
+  if (trailing != 13 && trailing != 14) {
+    f.fail("trailing fields", std::to_string(trailing), "expected 13 or 14 after the remissions");
   }
   const Pose2 laser{f.number(p, "laser_x"), f.number(p + 1, "laser_y"),
                     f.number(p + 2, "laser_theta")};
@@ -118,6 +120,7 @@ void parse_robotlaser(const Fields& f, ReaderState& s, const LogReadOptions& o) 
   scan.laser_offset = scan.odometry.between(laser);
   if (scan.laser_offset.norm() > 2.0) scan.laser_offset = Pose2{};
   scan.timestamp = ipc_time(f);
+  scan.logger_timestamp = logger_time(f);
   s.streams[1].push_back(std::move(scan));
 }
 
@@ -126,6 +129,7 @@ void parse_rawlaser(const Fields& f, ReaderState& s, const LogReadOptions& o) {
   const std::size_t p = parse_laser_head(f, o, scan);
   if (f.size() != p + 3) f.fail("trailing fields", std::to_string(f.size() - p), "expected 3");
   scan.timestamp = ipc_time(f);
+  scan.logger_timestamp = logger_time(f);
   scan.laser_offset = {param_or(s, "robot_frontlaser_offset", 0.0), 0.0, 0.0};
   s.raw_needs_odometry.push_back(s.streams[2].size());
   s.streams[2].push_back(std::move(scan));

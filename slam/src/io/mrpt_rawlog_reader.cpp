@@ -118,6 +118,7 @@ class RawlogReader {
     // record index, which keeps them in order (not real time, so do not mix with real stamps).
     if (!(stamp > 0.0)) stamp = static_cast<double>(record_) * 0.1;
     scan.timestamp = stamp;
+    scan.logger_timestamp = stamp;  // one clock in a rawlog
     scan.angle_min = -0.5 * obs.aperture;
     scan.angle_increment = obs.aperture / static_cast<double>(n - 1);
     scan.max_range = obs.maxRange;

@@ -15,6 +15,9 @@ namespace lookahead::slam {
 /// at/above max_range are no-returns (see is_return()).
 struct LaserScan {
   double timestamp = 0.0;        ///< source's own timestamp [s] (CARMEN: ipc timestamp)
+  /// CARMEN's logger timestamp (the clock GMapping's .gfs.log outputs print); equal to
+  /// `timestamp` for sources with one clock.
+  double logger_timestamp = 0.0;
   std::vector<float> ranges;     ///< one reading per beam [m]
   double angle_min = 0.0;        ///< bearing of the first beam in the laser frame [rad]
   double angle_increment = 0.0;  ///< bearing step between beams [rad]

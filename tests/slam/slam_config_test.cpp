@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/config/slam_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "lookahead/slam/io/parse_error.hpp"
+
+namespace lookahead::slam {
+namespace {
+
+TEST(SlamConfig, DumpReadsBackToTheSameOptions) {
+  RbpfOptions o;
+  o.particles = 77;
+  o.grid.resolution = 0.025;
+  o.likelihood.temperature = 0.123;
+  const RbpfOptions back = parse_rbpf_options(dump_rbpf_options(o), "dump");
+  EXPECT_EQ(dump_rbpf_options(back), dump_rbpf_options(o));
+  EXPECT_EQ(back.particles, 77);
+  EXPECT_DOUBLE_EQ(back.likelihood.temperature, 0.123);
+}
+
+// config/slam/default.yaml documents the defaults: it must say exactly what the code does.
+TEST(SlamConfig, ShippedDefaultsMatchTheCode) {
+  std::ifstream in(std::string(LOOKAHEAD_SOURCE_DIR) + "/config/slam/default.yaml");
+  ASSERT_TRUE(in) << "config/slam/default.yaml missing";
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string expected = "# lookahead SLAM defaults (lookahead config --dump)\n" + dump_rbpf_options({});
+  EXPECT_EQ(text.str(), expected) << "regenerate with: lookahead config --dump > config/slam/default.yaml";
+}
+
+TEST(SlamConfig, UnknownKeyNamesFileLineAndKey) {
+  try {
+    parse_rbpf_options("filter:\n  particles: 10\n  partcles: 5\n", "my.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "my.yaml");
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "filter.partcles");
+  }
+}
+
+TEST(SlamConfig, BadValueNamesTheValue) {
+  try {
+    parse_rbpf_options("grid:\n  resolution: fine\n", "my.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.field(), "grid.resolution");
+    EXPECT_EQ(e.value(), "fine");
+  }
+}
+
+TEST(SlamConfig, ImpossibleValueIsRejected) {
+  EXPECT_THROW(parse_rbpf_options("filter:\n  particles: 0\n", "x"), ParseError);
+  EXPECT_THROW(parse_rbpf_options("grid:\n  resolution: -1\n", "x"), ParseError);
+  EXPECT_THROW(parse_rbpf_options("unknown_section:\n  a: 1\n", "x"), ParseError);
+  EXPECT_THROW(parse_rbpf_options("[1, 2]", "x"), ParseError);
+  EXPECT_THROW(parse_rbpf_options("filter: {particles: [", "x"), ParseError);
+}
+
+TEST(SlamConfig, LeftOutKeysKeepTheirDefaults) {
+  const RbpfOptions o = parse_rbpf_options("motion:\n  srr: 0.3\n", "x");
+  EXPECT_DOUBLE_EQ(o.motion.srr, 0.3);
+  EXPECT_DOUBLE_EQ(o.motion.stt, MotionModelOptions{}.stt);
+  EXPECT_EQ(o.particles, RbpfOptions{}.particles);
+}
+
+}  // namespace
+}  // namespace lookahead::slam
