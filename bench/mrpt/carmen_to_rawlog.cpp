@@ -23,7 +23,6 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>

@@ -26,6 +26,7 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v("angular_update", o.angular_update, "... or this much rotation [rad]");
   v("resample_threshold", o.resample_threshold, "resample when Neff < this * N");
   v("warmup_updates", o.warmup_updates, "updates that only insert scans");
+  v("weight_exponent", o.weight_exponent, "k in w = w eta^k (flattens overconfident weights)");
   v.section("grid");
   v("resolution", o.grid.resolution, "cell side [m]");
   v("log_odds_hit", o.grid.log_odds_hit, "log-odds added where a beam ends");

@@ -11,28 +11,44 @@ struct BeamEnd {
   bool hit;
 };
 
-// Caches the tile of the last cell written, so a ray pays the copy-on-write check once per
-// tile it crosses rather than once per cell.
+// Caches the tile of the last cell visited, so a ray pays the tile lookup (and the
+// copy-on-write check) once per tile it crosses rather than once per cell. Reads do not
+// copy: a shared tile is duplicated only when a cell in it really changes.
 class TileCursor {
  public:
   explicit TileCursor(OccupancyGrid& grid) : grid_(grid) {}
-  GridTile& at(CellIndex c) {
+  const GridTile* peek(CellIndex c) {
     const int tx = c.x >> GridTile::kBits;
     const int ty = c.y >> GridTile::kBits;
-    if (tile_ == nullptr || tx != tx_ || ty != ty_) {
-      tile_ = &grid_.mutable_tile(tx, ty);
+    if (tx != tx_ || ty != ty_ || !valid_) {
       tx_ = tx;
       ty_ = ty;
+      valid_ = true;
+      writable_ = nullptr;
+      read_ = grid_.tile(tx, ty);
     }
-    return *tile_;
+    return read_;
   }
-  void invalidate() { tile_ = nullptr; }
+  GridTile& at(CellIndex c) {
+    peek(c);
+    if (writable_ == nullptr) read_ = writable_ = &grid_.mutable_tile(tx_, ty_);
+    return *writable_;
+  }
 
  private:
   OccupancyGrid& grid_;
-  GridTile* tile_ = nullptr;
+  const GridTile* read_ = nullptr;
+  GridTile* writable_ = nullptr;
   int tx_ = 0, ty_ = 0;
+  bool valid_ = false;
 };
+
+// A miss changes nothing on a cell already at the lower clamp that is not an obstacle:
+// skipping it keeps the long-known free space of a map shared between particles.
+bool miss_changes(const GridTile* t, int i, int floor) {
+  return t == nullptr || t->log_odds[i] == GridTile::kUnknown || t->log_odds[i] > floor ||
+         (t->flags[i] & (GridTile::kObstacle | GridTile::kHitThisScan)) != 0;
+}
 
 std::vector<BeamEnd> beam_ends(const OccupancyGrid& grid, const Pose2& laser,
                                const LaserScan& scan, double usable) {
@@ -60,13 +76,14 @@ void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan,
     if (e.hit) cursor.at(e.cell).flags[OccupancyGrid::local(e.cell)] |= GridTile::kHitThisScan;
   }
   const int miss = grid.fixed_miss();
+  const int floor = grid.fixed_min();
   for (const BeamEnd& e : ends) {  // phase 2: misses along every beam, sparing the hits
     trace_cells(origin, e.cell, [&](CellIndex c) {
       if (c == e.cell) return false;
+      const int i = OccupancyGrid::local(c);
+      if (!miss_changes(cursor.peek(c), i, floor)) return true;
       GridTile& t = cursor.at(c);
-      if (!(t.flags[OccupancyGrid::local(c)] & GridTile::kHitThisScan)) {
-        grid.add_log_odds_in(t, c, miss);
-      }
+      if (!(t.flags[i] & GridTile::kHitThisScan)) grid.add_log_odds_in(t, c, miss);
       return true;
     });
   }
@@ -81,7 +98,9 @@ void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan,
   }
   // Non-hit beam ends (cropped at the usable range) are free too.
   for (const BeamEnd& e : ends) {
-    if (!e.hit) grid.add_log_odds_in(cursor.at(e.cell), e.cell, miss);
+    if (!e.hit && miss_changes(cursor.peek(e.cell), OccupancyGrid::local(e.cell), floor)) {
+      grid.add_log_odds_in(cursor.at(e.cell), e.cell, miss);
+    }
   }
 }
 

@@ -29,6 +29,9 @@ void validate(const RbpfOptions& o) {
   }
   if (o.linear_update < 0 || o.angular_update < 0) throw std::invalid_argument("update thresholds >= 0");
   if (o.threads < 0) throw std::invalid_argument("threads >= 0");
+  if (!(o.weight_exponent > 0 && o.weight_exponent <= 1)) {
+    throw std::invalid_argument("weight_exponent in (0, 1]");
+  }
 }
 
 }  // namespace
@@ -84,12 +87,14 @@ void Rbpf::update_particle(Particle& p, const Pose2& u, const LaserScan& scan,
     const ProposalDraw d = draw_improved_proposal(p.map, p.pose, u, m.pose, prepared, likelihood_,
                                                   motion_, options_.proposal, rng);
     p.pose = d.pose;
-    p.log_weight += d.log_eta;
+    p.log_weight += options_.weight_exponent * d.log_eta;
   } else {
     // No usable match: sample the odometry model and weight by the observation (the
     // standard proposal), as Grisetti et al. do when scan matching fails.
     p.pose = motion_.sample(p.pose, u, rng);
-    if (warm) p.log_weight += likelihood_.log_likelihood(p.map, p.pose, prepared);
+    if (warm) {
+      p.log_weight += options_.weight_exponent * likelihood_.log_likelihood(p.map, p.pose, prepared);
+    }
     failed = warm;
   }
   insert_scan(p.map, p.pose, scan, options_.insert);

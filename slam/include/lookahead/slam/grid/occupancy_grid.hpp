@@ -77,6 +77,7 @@ class OccupancyGrid {
   /// Fixed-point values of the options, precomputed for the insertion loop.
   int fixed_hit() const { return hit_; }
   int fixed_miss() const { return miss_; }
+  int fixed_min() const { return min_; }
 
  private:
   void grow_to_include(int tx, int ty);

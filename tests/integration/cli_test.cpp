@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// The `lookahead` command end to end: outputs of a run, and bad input ending with a clear
+// error and a non-zero exit.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code;
+  std::string output;
+};
+
+Result shell(const std::string& cmd) {
+  const fs::path out = fs::temp_directory_path() / ("lookahead-cli-" + std::to_string(std::rand()) + ".txt");
+  const int status = std::system((cmd + " > " + out.string() + " 2>&1").c_str());
+  std::ifstream in(out);
+  std::stringstream text;
+  text << in.rdbuf();
+  fs::remove(out);
+  return {WEXITSTATUS(status), text.str()};
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("lookahead-cli-test-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path dir;
+  const std::string bin = LOOKAHEAD_BINARY;
+};
+
+TEST_F(Cli, SlamOnTheDefaultLogWritesEveryOutput) {
+  const Result r = shell(bin + " slam --out " + dir.string() + " --particles 10");
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* f : {"map.pgm", "map.yaml", "map.png", "trajectory.txt", "run.json"}) {
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  }
+  nlohmann::json j;
+  std::ifstream(dir / "run.json") >> j;
+  EXPECT_EQ(j["scans"].get<int>(), 225);  // the MRPT one-loop rawlog
+  EXPECT_GT(j["updates"].get<int>(), 50);
+  EXPECT_GT(j["peak_memory_mb"].get<double>(), 1.0);
+  EXPECT_EQ(j["neff_history"].size(), j["updates"].get<std::size_t>());
+  const Result e = shell(bin + " eval --map " + (dir / "map.yaml").string());
+  EXPECT_EQ(e.code, 0) << e.output;
+  EXPECT_NE(e.output.find("map entropy"), std::string::npos);
+}
+
+TEST_F(Cli, MalformedLogStopsWithFileLineAndField) {
+  const fs::path log = dir / "bad.log";
+  std::ofstream(log) << "ODOM 0 0 0 0 0 0 1 h 1\nFLASER 3 1.0 2.0 x 0 0 0 0 0 0 2 h 2\n";
+  const Result r = shell(bin + " slam " + log.string() + " --out " + (dir / "o").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("bad.log:2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'x'"), std::string::npos) << r.output;
+  const Result skip = shell(bin + " slam " + log.string() + " --skip-bad-lines --out " + (dir / "o").string());
+  EXPECT_NE(skip.output.find("skipped 1 malformed"), std::string::npos) << skip.output;
+}
+
+TEST_F(Cli, MissingFilesAndBadConfigsAreErrorsNotCrashes) {
+  EXPECT_EQ(shell(bin + " slam /no/such/log.clf").code, 2);
+  const fs::path cfg = dir / "bad.yaml";
+  std::ofstream(cfg) << "filter:\n  particles: many\n";
+  const Result r = shell(bin + " slam --config " + cfg.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("bad.yaml:2"), std::string::npos) << r.output;
+}
+
+}  // namespace
