@@ -2,6 +2,7 @@
 // `lookahead`: exploration and mapping with structure prediction. See README.md.
 #include <spdlog/spdlog.h>
 
+#include <cstdlib>
 #include <exception>
 #include <map>
 
@@ -9,6 +10,9 @@
 #include "lookahead/slam/io/parse_error.hpp"
 
 int main(int argc, char** argv) {
+  // Idle OpenMP workers sleep instead of spinning: on a 2-core machine shared with other
+  // work a spinning worker steals the core the busy one needs. The user's setting wins.
+  setenv("OMP_WAIT_POLICY", "passive", 0);
   CLI::App app{"lookahead: RBPF grid SLAM, exploration and structure prediction"};
   app.require_subcommand(1);
   std::map<CLI::App*, lookahead::app::Run> runs;
