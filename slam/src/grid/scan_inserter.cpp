@@ -79,7 +79,7 @@ void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan,
   const int floor = grid.fixed_min();
   for (const BeamEnd& e : ends) {  // phase 2: misses along every beam, sparing the hits
     trace_cells(origin, e.cell, [&](CellIndex c) {
-      if (c == e.cell) return false;
+      if (c == e.cell) return false;  // the end cell is phase 3's (or the last loop's)
       const int i = OccupancyGrid::local(c);
       if (!miss_changes(cursor.peek(c), i, floor)) return true;
       GridTile& t = cursor.at(c);
