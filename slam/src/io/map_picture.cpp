@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -32,41 +33,65 @@ cv::Mat render_occupancy(const ProbabilityMap& map, int scale) {
   return img;
 }
 
-}  // namespace
-
-void write_map_picture(const std::string& png_path, const ProbabilityMap& map,
-                       const std::vector<PicturePath>& paths, const std::string& title) {
-  if (map.width == 0 || map.height == 0) throw ParseError(png_path, 0, "", "", "empty map");
-  // Small maps are scaled up so a person can see the cells; big ones stay 1:1.
-  const int scale = std::max(1, 800 / std::max(map.width, map.height));
-  cv::Mat img = render_occupancy(map, scale);
-  const auto to_px = [&](const Pose2& p) {
-    return cv::Point(static_cast<int>((p.x - map.origin_x) / map.resolution * scale),
-                     static_cast<int>((map.height - (p.y - map.origin_y) / map.resolution) * scale));
-  };
-  for (const PicturePath& path : paths) {
-    std::vector<cv::Point> pts;
-    for (const Pose2& p : path.poses) pts.push_back(to_px(p));
-    if (pts.size() > 1) {
-      cv::polylines(img, pts, false, bgr(path.colour), path.thickness, cv::LINE_AA);
-    }
-  }
-  if (!paths.empty() && !paths.front().poses.empty()) {
-    cv::circle(img, to_px(paths.front().poses.front()), 6, cv::Scalar(40, 160, 40), cv::FILLED);
-  }
-  // Legend in the top-left corner on a white box.
+void draw_legend(cv::Mat& img, const std::vector<PicturePath>& paths,
+                 const std::vector<PicturePoints>& points, const std::string& title) {
   const int line_h = 18;
-  const int box_h = line_h * static_cast<int>(paths.size() + 2) + 6;
-  cv::rectangle(img, cv::Rect(4, 4, 330, box_h), cv::Scalar(255, 255, 255), cv::FILLED);
+  const int rows = static_cast<int>(paths.size() + points.size()) + 2;
+  cv::rectangle(img, cv::Rect(4, 4, 330, line_h * rows + 6), cv::Scalar(255, 255, 255), cv::FILLED);
+  const auto text = [&](const std::string& t, int row) {
+    cv::putText(img, t, {48, 4 + line_h * row}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  };
   cv::putText(img, title, {10, 4 + line_h}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   int row = 2;
   for (const PicturePath& path : paths) {
-    const int yline = 4 + line_h * row++;
-    cv::line(img, {10, yline - 5}, {40, yline - 5}, bgr(path.colour), 3);
-    cv::putText(img, path.label, {48, yline}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    cv::line(img, {10, 4 + line_h * row - 5}, {40, 4 + line_h * row - 5}, bgr(path.colour), 3);
+    text(path.label, row++);
+  }
+  for (const PicturePoints& set : points) {
+    cv::circle(img, {25, 4 + line_h * row - 5}, 4, bgr(set.colour), cv::FILLED);
+    text(set.label, row++);
   }
   cv::circle(img, {25, 4 + line_h * row - 5}, 5, cv::Scalar(40, 160, 40), cv::FILLED);
-  cv::putText(img, "start", {48, 4 + line_h * row}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+  text("start", row);
+}
+
+}  // namespace
+
+BgrImage render_map_picture(const ProbabilityMap& map, const std::vector<PicturePath>& paths,
+                            const std::vector<PicturePoints>& points, const std::string& title) {
+  if (map.width == 0 || map.height == 0) throw std::invalid_argument("render_map_picture: empty map");
+  const int scale = std::max(1, 800 / std::max(map.width, map.height));
+  cv::Mat img = render_occupancy(map, scale);
+  const auto to_px = [&](double x, double y) {
+    return cv::Point(static_cast<int>((x - map.origin_x) / map.resolution * scale),
+                     static_cast<int>((map.height - (y - map.origin_y) / map.resolution) * scale));
+  };
+  for (const PicturePoints& set : points) {
+    for (const auto& [x, y] : set.points) cv::circle(img, to_px(x, y), set.radius, bgr(set.colour), cv::FILLED);
+  }
+  for (const PicturePath& path : paths) {
+    std::vector<cv::Point> pts;
+    for (const Pose2& p : path.poses) pts.push_back(to_px(p.x, p.y));
+    if (pts.size() > 1) cv::polylines(img, pts, false, bgr(path.colour), path.thickness, cv::LINE_AA);
+  }
+  if (!paths.empty() && !paths.front().poses.empty()) {
+    const Pose2& s0 = paths.front().poses.front();
+    cv::circle(img, to_px(s0.x, s0.y), 6, cv::Scalar(40, 160, 40), cv::FILLED);
+  }
+  draw_legend(img, paths, points, title);
+  BgrImage out;
+  out.width = img.cols;
+  out.height = img.rows;
+  out.pixels.assign(img.data, img.data + img.total() * img.elemSize());
+  return out;
+}
+
+void write_map_picture(const std::string& png_path, const ProbabilityMap& map,
+                       const std::vector<PicturePath>& paths, const std::string& title,
+                       const std::vector<PicturePoints>& points) {
+  if (map.width == 0 || map.height == 0) throw ParseError(png_path, 0, "", "", "empty map");
+  BgrImage image = render_map_picture(map, paths, points, title);
+  const cv::Mat img(image.height, image.width, CV_8UC3, image.pixels.data());
   if (!cv::imwrite(png_path, img)) throw ParseError(png_path, 0, "", "", "cannot write image");
 }
 

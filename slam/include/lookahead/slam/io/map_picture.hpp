@@ -23,9 +23,28 @@ struct PicturePath {
   int thickness = 2;
 };
 
-/// Writes a PNG of `map` with the paths drawn over it; the start of the first path gets a
-/// marker. `title` goes in the legend's first line.
+struct PicturePoints {
+  std::vector<std::pair<double, double>> points;  ///< [m]
+  Rgb colour;
+  std::string label;
+  int radius = 2;  ///< [px]
+};
+
+/// An 8-bit BGR image in memory (row-major, top row first).
+struct BgrImage {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> pixels;
+};
+
+/// Renders `map` with the paths and point sets drawn over it and a legend; the start of
+/// the first path gets a marker. `title` goes in the legend's first line. Small maps are
+/// scaled up so cells stay visible.
+BgrImage render_map_picture(const ProbabilityMap& map, const std::vector<PicturePath>& paths,
+                            const std::vector<PicturePoints>& points, const std::string& title);
+
+/// render_map_picture() written to a PNG file.
 void write_map_picture(const std::string& png_path, const ProbabilityMap& map,
-                       const std::vector<PicturePath>& paths, const std::string& title);
+                       const std::vector<PicturePath>& paths, const std::string& title,
+                       const std::vector<PicturePoints>& points = {});
 
 }  // namespace lookahead::slam
