@@ -48,6 +48,8 @@ TEST(Rbpf, CorrectsDriftingOdometry) {
   Rbpf filter(small(1));
   for (const auto& d : data) filter.add_scan(d.second);
   const auto path = filter.best_trajectory();
+  EXPECT_EQ(filter.current_pose().x, path.back().x);
+  EXPECT_EQ(filter.current_pose().theta, path.back().theta);
   const Pose2 truth = data.back().first;
   const Pose2 odom = data.back().second.odometry;
   const double odom_error = std::hypot(odom.x - truth.x, odom.y - truth.y);

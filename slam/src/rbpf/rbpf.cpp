@@ -146,6 +146,11 @@ std::size_t Rbpf::best_particle() const {
   return best;
 }
 
+Pose2 Rbpf::current_pose() const {
+  if (particles_.empty()) return {};
+  return particles_[best_particle()].pose.compose(last_update_odometry_.between(odometry_.back()));
+}
+
 std::vector<Pose2> Rbpf::best_trajectory() const {
   std::vector<Pose2> out(timestamps_.size());
   if (particles_.empty()) return out;

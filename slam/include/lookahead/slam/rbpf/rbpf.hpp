@@ -38,6 +38,9 @@ class Rbpf {
   /// The best particle's pose for every scan added so far (scans between updates are placed
   /// by odometry relative to the last updated pose).
   [[nodiscard]] std::vector<Pose2> best_trajectory() const;
+  /// The best particle's estimate of the pose at the latest scan (its last updated pose
+  /// moved by the odometry since): what a robot in the loop plans from.
+  [[nodiscard]] Pose2 current_pose() const;
   [[nodiscard]] const std::vector<double>& timestamps() const { return timestamps_; }
   [[nodiscard]] const std::vector<Pose2>& odometry() const { return odometry_; }
   [[nodiscard]] const RbpfStatistics& statistics() const { return stats_; }
