@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// Which frontier to explore next: one interface, several strategies. The P-SLAM issue adds
+// a prediction-aware strategy behind the same interface (predicted cells count as known in
+// the information gain, confidently predicted frontiers may be skipped).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lookahead/exploration/frontier_detector.hpp"
+
+namespace lookahead::exploration {
+
+/// A frontier cluster priced for selection.
+struct Candidate {
+  const FrontierCluster* cluster = nullptr;
+  double path_cost = 0.0;         ///< travel distance from the robot to the goal [m]
+  double information_gain = 0.0;  ///< unknown area within sensor range of the goal [m^2]
+};
+
+class TargetStrategy {
+ public:
+  virtual ~TargetStrategy() = default;
+  [[nodiscard]] virtual std::string name() const = 0;
+  /// Index of the chosen candidate; nullopt when none is worth going to.
+  [[nodiscard]] virtual std::optional<std::size_t> choose(const std::vector<Candidate>& candidates) const = 0;
+};
+
+/// The closest frontier by path cost (Yamauchi 1997).
+class NearestFrontierStrategy : public TargetStrategy {
+ public:
+  [[nodiscard]] std::string name() const override { return "nearest"; }
+  [[nodiscard]] std::optional<std::size_t> choose(const std::vector<Candidate>& c) const override;
+};
+
+/// Information gain minus weighted travel cost (Gonzalez-Banos & Latombe 2002):
+/// utility = gain - lambda * cost.
+class UtilityStrategy : public TargetStrategy {
+ public:
+  explicit UtilityStrategy(double lambda = 1.0) : lambda_(lambda) {}  ///< [m^2 per m]
+  [[nodiscard]] std::string name() const override { return "utility"; }
+  [[nodiscard]] std::optional<std::size_t> choose(const std::vector<Candidate>& c) const override;
+
+ private:
+  double lambda_;
+};
+
+/// "nearest" or "utility"; throws std::invalid_argument naming the choices otherwise.
+std::unique_ptr<TargetStrategy> make_strategy(const std::string& name);
+
+}  // namespace lookahead::exploration

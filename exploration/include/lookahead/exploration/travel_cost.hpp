@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// Travel cost from the robot to every reachable cell: Dijkstra over 8-connected traversable
+// cells (steps of 1 and sqrt 2 cells). One run per target selection prices every frontier
+// goal at once, where a planner call per goal would cost a planning budget each.
+#pragma once
+
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "lookahead/slam/grid/cell_index.hpp"
+
+namespace lookahead::exploration {
+
+class TravelCost {
+ public:
+  /// Distances [m] from `start` over cells in [lo, hi] for which traversable(c) holds.
+  TravelCost(slam::CellIndex lo, slam::CellIndex hi, double resolution, slam::CellIndex start,
+             const std::function<bool(slam::CellIndex)>& traversable);
+
+  /// Distance to a cell [m]; infinity when unreachable or outside the bounds.
+  [[nodiscard]] double at(slam::CellIndex c) const;
+  [[nodiscard]] bool reachable(slam::CellIndex c) const { return at(c) < kInfinity; }
+
+  static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+ private:
+  [[nodiscard]] int index(slam::CellIndex c) const;
+  slam::CellIndex lo_, hi_;
+  int width_ = 0, height_ = 0;
+  std::vector<float> dist_;
+};
+
+}  // namespace lookahead::exploration

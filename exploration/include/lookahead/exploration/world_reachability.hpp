@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// The free area a disc robot can reach from a start position: the denominator of every
+// coverage figure (DESIGN.md, "Evaluation").
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "lookahead/exploration/world.hpp"
+
+namespace lookahead::exploration {
+
+struct ReachableArea {
+  /// Cells where the robot's centre can go: free after inflating the obstacles by the radius,
+  /// 4-connected to the start cell (4 so no diagonal squeezes between two corners).
+  std::vector<std::uint8_t> centres;
+  /// Free cells the robot's body can cover from those centres (centres grown by the radius):
+  /// what a coverage metric should count. Row-major like World::cells(); 1 = reachable.
+  std::vector<std::uint8_t> reachable;
+  std::size_t reachable_cells = 0;
+  double area_m2 = 0.0;
+  /// False when the start itself is in collision; the masks are then empty (all zero).
+  bool start_valid = false;
+};
+
+/// Flood fill from `start` [m] for a robot of `robot_radius` [m] (>= 0; 0 = a point robot).
+/// Inflation is conservative: a cell is blocked when the nearest occupied cell centre is
+/// closer than radius + half a cell diagonal.
+ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& start,
+                                  double robot_radius);
+
+}  // namespace lookahead::exploration

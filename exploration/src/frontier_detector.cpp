@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/exploration/frontier_detector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <stdexcept>
+
+namespace lookahead::exploration {
+
+using slam::CellIndex;
+
+FrontierDetector::FrontierDetector(const FrontierOptions& options) : options_(options) {
+  if (!(options.free_threshold > 0 && options.free_threshold < 0.5) ||
+      !(options.occupied_threshold > 0.5 && options.occupied_threshold < 1) ||
+      options.min_cluster_cells < 1 || options.robot_radius < 0 || options.goal_search_radius < 0) {
+    throw std::invalid_argument("frontier options out of range");
+  }
+}
+
+bool FrontierDetector::is_free(const slam::OccupancyGrid& grid, CellIndex c) const {
+  return grid.is_known(c) && grid.probability(c) < options_.free_threshold;
+}
+
+bool FrontierDetector::is_frontier(const slam::OccupancyGrid& grid, CellIndex c) const {
+  if (!is_free(grid, c)) return false;
+  // 4-neighbourhood: a diagonal unknown cell alone is a gap between beams, not a way out.
+  return !grid.is_known({c.x + 1, c.y}) || !grid.is_known({c.x - 1, c.y}) ||
+         !grid.is_known({c.x, c.y + 1}) || !grid.is_known({c.x, c.y - 1});
+}
+
+void FrontierDetector::update(const slam::OccupancyGrid& grid, CellIndex min, CellIndex max) {
+  // A cell's state depends on its 4-neighbours, so the border of the region may change too.
+  for (int y = min.y - 1; y <= max.y + 1; ++y) {
+    for (int x = min.x - 1; x <= max.x + 1; ++x) {
+      const CellIndex c{x, y};
+      if (is_frontier(grid, c)) cells_.insert(c);
+      else cells_.erase(c);
+    }
+  }
+}
+
+void FrontierDetector::rebuild(const slam::OccupancyGrid& grid) {
+  cells_.clear();
+  CellIndex lo, hi;
+  if (grid.known_bounds(lo, hi)) update(grid, lo, hi);
+}
+
+bool FrontierDetector::has_clearance(const slam::OccupancyGrid& grid, CellIndex c) const {
+  const int r = static_cast<int>(std::ceil(options_.robot_radius / grid.resolution()));
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      if (dx * dx + dy * dy > r * r) continue;
+      const CellIndex q{c.x + dx, c.y + dy};
+      if (grid.is_known(q) && grid.probability(q) >= options_.occupied_threshold) return false;
+    }
+  }
+  return true;
+}
+
+// The goal is the free cell with clearance closest to the cluster's centroid, searched
+// among the cluster's cells and then breadth-first through free space around them: a
+// centroid can lie inside a wall or in unknown space, a goal must not.
+bool FrontierDetector::find_goal(const slam::OccupancyGrid& grid, FrontierCluster& cluster) const {
+  const int max_steps = static_cast<int>(std::ceil(options_.goal_search_radius / grid.resolution()));
+  std::unordered_set<CellIndex, CellHash> seen(cluster.cells.begin(), cluster.cells.end());
+  std::deque<std::pair<CellIndex, int>> queue;
+  for (const CellIndex c : cluster.cells) queue.push_back({c, 0});
+  double best = INFINITY;
+  while (!queue.empty()) {
+    const auto [c, depth] = queue.front();
+    queue.pop_front();
+    if (has_clearance(grid, c)) {
+      double x, y;
+      grid.cell_center(c, x, y);
+      const double d = std::hypot(x - cluster.centroid_x, y - cluster.centroid_y);
+      if (d < best) {
+        best = d;
+        cluster.goal_x = x;
+        cluster.goal_y = y;
+      }
+    }
+    if (depth >= max_steps || best < INFINITY) continue;  // stop widening once a goal exists
+    for (const CellIndex n : {CellIndex{c.x + 1, c.y}, CellIndex{c.x - 1, c.y}, CellIndex{c.x, c.y + 1},
+                              CellIndex{c.x, c.y - 1}}) {
+      if (is_free(grid, n) && seen.insert(n).second) queue.push_back({n, depth + 1});
+    }
+  }
+  cluster.has_goal = best < INFINITY;
+  return cluster.has_goal;
+}
+
+std::vector<FrontierCluster> FrontierDetector::clusters(const slam::OccupancyGrid& grid) const {
+  std::vector<FrontierCluster> out;
+  std::unordered_set<CellIndex, CellHash> visited;
+  // Sorted seeds make the cluster order (and so every later tie) independent of hashing.
+  std::vector<CellIndex> seeds(cells_.begin(), cells_.end());
+  std::sort(seeds.begin(), seeds.end(), [](CellIndex a, CellIndex b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+  for (const CellIndex seed : seeds) {
+    if (!visited.insert(seed).second) continue;
+    FrontierCluster cluster;
+    std::deque<CellIndex> queue{seed};
+    while (!queue.empty()) {
+      const CellIndex c = queue.front();
+      queue.pop_front();
+      cluster.cells.push_back(c);
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const CellIndex n{c.x + dx, c.y + dy};
+          if (cells_.count(n) && visited.insert(n).second) queue.push_back(n);
+        }
+      }
+    }
+    if (static_cast<int>(cluster.cells.size()) < options_.min_cluster_cells) continue;
+    for (const CellIndex c : cluster.cells) {
+      double x, y;
+      grid.cell_center(c, x, y);
+      cluster.centroid_x += x / static_cast<double>(cluster.cells.size());
+      cluster.centroid_y += y / static_cast<double>(cluster.cells.size());
+    }
+    find_goal(grid, cluster);
+    out.push_back(std::move(cluster));
+  }
+  return out;
+}
+
+}  // namespace lookahead::exploration

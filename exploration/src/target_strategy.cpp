@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/exploration/target_strategy.hpp"
+
+#include <stdexcept>
+
+namespace lookahead::exploration {
+
+std::optional<std::size_t> NearestFrontierStrategy::choose(const std::vector<Candidate>& c) const {
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (!best || c[i].path_cost < c[*best].path_cost) best = i;
+  }
+  return best;
+}
+
+std::optional<std::size_t> UtilityStrategy::choose(const std::vector<Candidate>& c) const {
+  std::optional<std::size_t> best;
+  double best_utility = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const double u = c[i].information_gain - lambda_ * c[i].path_cost;
+    if (!best || u > best_utility) {
+      best = i;
+      best_utility = u;
+    }
+  }
+  return best;
+}
+
+std::unique_ptr<TargetStrategy> make_strategy(const std::string& name) {
+  if (name == "nearest") return std::make_unique<NearestFrontierStrategy>();
+  if (name == "utility") return std::make_unique<UtilityStrategy>();
+  throw std::invalid_argument("unknown strategy '" + name + "' (choose nearest or utility)");
+}
+
+}  // namespace lookahead::exploration

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/exploration/frontier_detector.hpp"
+
+#include <gtest/gtest.h>
+
+#include "lookahead/exploration/goal_blacklist.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+using slam::CellIndex;
+using slam::OccupancyGrid;
+
+void set_free(OccupancyGrid& g, int x0, int y0, int x1, int y1) {
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) g.add_log_odds({x, y}, 3 * g.fixed_miss());
+}
+void set_wall(OccupancyGrid& g, int x0, int y0, int x1, int y1) {
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) g.add_log_odds({x, y}, 3 * g.fixed_hit());
+}
+
+// A 40 x 20 cell room with walls, open on its right side: the frontier is that side.
+OccupancyGrid open_room() {
+  OccupancyGrid g;
+  set_free(g, 0, 0, 39, 19);
+  set_wall(g, -1, -1, 40, -1);
+  set_wall(g, -1, 20, 40, 20);
+  set_wall(g, -1, -1, -1, 20);
+  return g;
+}
+
+TEST(FrontierDetector, FreeCellsNextToUnknownAreFrontiers) {
+  const OccupancyGrid g = open_room();
+  FrontierDetector d;
+  d.rebuild(g);
+  EXPECT_EQ(d.cells().size(), 20u);  // the column x = 39, y = 0..19
+  for (const CellIndex c : d.cells()) EXPECT_EQ(c.x, 39);
+  EXPECT_FALSE(d.is_frontier(g, {20, 10}));  // inside
+  EXPECT_FALSE(d.is_frontier(g, {-1, 5}));   // wall
+}
+
+TEST(FrontierDetector, ClusterGoalIsFreeWithClearance) {
+  const OccupancyGrid g = open_room();
+  FrontierDetector d;
+  d.rebuild(g);
+  const auto clusters = d.clusters(g);
+  ASSERT_EQ(clusters.size(), 1u);
+  ASSERT_TRUE(clusters[0].has_goal);
+  EXPECT_NEAR(clusters[0].goal_y, clusters[0].centroid_y, 0.06);
+  const CellIndex goal = g.cell_at(clusters[0].goal_x, clusters[0].goal_y);
+  EXPECT_TRUE(d.is_free(g, goal));
+}
+
+// The centroid of an L-shaped frontier lies in unknown space; the goal must not.
+TEST(FrontierDetector, GoalOfAnLShapedFrontierIsNotTheCentroid) {
+  OccupancyGrid g;
+  set_free(g, 0, 0, 29, 29);
+  FrontierDetector d;
+  d.rebuild(g);
+  auto clusters = d.clusters(g);
+  ASSERT_EQ(clusters.size(), 1u);  // the whole border is one ring
+  ASSERT_TRUE(clusters[0].has_goal);
+  EXPECT_TRUE(d.is_free(g, g.cell_at(clusters[0].goal_x, clusters[0].goal_y)));
+}
+
+TEST(FrontierDetector, NarrowGapWithoutClearanceHasNoGoal) {
+  OccupancyGrid g;
+  set_wall(g, 0, 0, 30, 30);
+  set_free(g, 10, 10, 10, 31);  // a one-cell slit through the walls, opening on unknown space
+  FrontierOptions o;
+  o.min_cluster_cells = 1;
+  FrontierDetector d(o);
+  d.rebuild(g);
+  EXPECT_TRUE(d.is_frontier(g, {10, 31}));
+  const auto clusters = d.clusters(g);
+  ASSERT_FALSE(clusters.empty());
+  for (const auto& c : clusters) EXPECT_FALSE(c.has_goal);  // a 5 cm slit fits no robot
+}
+
+TEST(FrontierDetector, IncrementalUpdateMatchesRebuild) {
+  OccupancyGrid g = open_room();
+  FrontierDetector incremental;
+  incremental.rebuild(g);
+  set_free(g, 40, 0, 55, 19);  // the robot saw further right, corridor walls included
+  set_wall(g, 40, -1, 56, -1);
+  set_wall(g, 40, 20, 56, 20);
+  incremental.update(g, {40, -1}, {56, 20});
+  FrontierDetector full;
+  full.rebuild(g);
+  EXPECT_EQ(incremental.cells(), full.cells());
+  for (const CellIndex c : full.cells()) EXPECT_EQ(c.x, 55);
+}
+
+TEST(FrontierDetector, SmallClustersAreIgnored) {
+  OccupancyGrid g = open_room();
+  set_wall(g, 39, 0, 39, 16);  // only three frontier cells stay open
+  FrontierDetector d;
+  d.rebuild(g);
+  EXPECT_TRUE(d.clusters(g).empty());
+}
+
+TEST(GoalBlacklist, EntriesExpire) {
+  GoalBlacklist b({0.5, 10.0});
+  b.add(1.0, 1.0, 0.0);
+  EXPECT_TRUE(b.contains(1.3, 1.0, 5.0));
+  EXPECT_FALSE(b.contains(2.0, 1.0, 5.0));
+  EXPECT_FALSE(b.contains(1.0, 1.0, 10.5));
+  EXPECT_EQ(b.expire(10.5), 0u);
+}
+
+}  // namespace
+}  // namespace lookahead::exploration

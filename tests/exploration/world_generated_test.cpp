@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+// Generated office and P-SLAM maze: documented dimensions, and every free cell reachable.
+#include <gtest/gtest.h>
+
+#include "lookahead/exploration/generated_worlds.hpp"
+#include "lookahead/exploration/robot.hpp"
+#include "lookahead/exploration/world_reachability.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+TEST(GeneratedWorlds, OfficeHasTheDocumentedSize) {
+  const OfficeOptions o;
+  const GeneratedWorld g = make_office(o);
+  EXPECT_NEAR(o.width_m(), 39.75, 1e-9);
+  EXPECT_NEAR(o.height_m(), 19.8, 1e-9);
+  EXPECT_NEAR(g.world.width_m(), 39.75, g.world.resolution());
+  EXPECT_NEAR(g.world.height_m(), 19.8, g.world.resolution());
+  // Free space: 16 rooms, the corridor and 16 door gaps through 0.15 m walls.
+  const double expected = 16 * 4.8 * 8.4 + (39.75 - 0.3) * 2.4 + 16 * 1.0 * 0.15;
+  EXPECT_NEAR(g.world.free_area_m2(), expected, 0.02 * expected);
+  EXPECT_FALSE(disc_collides(g.world, {g.start.x, g.start.y}, 0.5));
+}
+
+TEST(GeneratedWorlds, OfficeIsConnectedForAPointAndForThePioneer) {
+  const GeneratedWorld g = make_office();
+  const Eigen::Vector2d start(g.start.x, g.start.y);
+  const ReachableArea point = reachable_free_area(g.world, start, 0.0);
+  ASSERT_TRUE(point.start_valid);
+  EXPECT_EQ(point.reachable_cells, g.world.free_cell_count());
+  // The 0.25 m disc gets through every 1 m door; only the corners it cannot sweep are lost.
+  const ReachableArea disc = reachable_free_area(g.world, start, 0.25);
+  EXPECT_GT(disc.area_m2, 0.97 * g.world.free_area_m2());
+  const OfficeOptions o;
+  for (int i = 0; i < o.rooms_per_side; ++i) {
+    const double x = o.wall_thickness + i * (o.room_width + o.wall_thickness) + o.room_width / 2;
+    for (const double y : {2.0, o.height_m() - 2.0}) {
+      const auto c = g.world.cell_of({x, y});
+      EXPECT_TRUE(disc.centres[static_cast<std::size_t>(c.y * g.world.width() + c.x)]) << x << " " << y;
+    }
+  }
+}
+
+TEST(GeneratedWorlds, OfficeDoorsFollowTheSeed) {
+  OfficeOptions a;
+  OfficeOptions b;
+  b.seed = 2;
+  EXPECT_EQ(make_office(a).world.cells(), make_office(a).world.cells());
+  EXPECT_NE(make_office(a).world.cells(), make_office(b).world.cells());
+  OfficeOptions bad;
+  bad.door_width = 5.0;
+  EXPECT_THROW(bad.validate(), std::invalid_argument);
+}
+
+TEST(GeneratedWorlds, PslamMazeMatchesThePaper) {
+  const MazeOptions o;
+  EXPECT_EQ(o.blocks_per_side(), 4);
+  const GeneratedWorld g = make_pslam_maze(o);
+  EXPECT_NEAR(g.world.width_m(), 25.4, 1e-9);
+  EXPECT_EQ(g.world.width(), 508);
+  // 625 m^2 minus 16 blocks of 3.5 m x 3.5 m.
+  EXPECT_NEAR(g.world.free_area_m2(), 625.0 - 16 * 3.5 * 3.5, 1e-6);
+  EXPECT_TRUE(g.world.is_occupied(2.2 + 1.75, 2.2 + 1.75));   // first block's centre
+  EXPECT_FALSE(g.world.is_occupied(2.2 + 3.5 + 1.1, 3.95));   // corridor between blocks
+  EXPECT_TRUE(g.world.is_occupied(-0.1, 12.0));               // boundary wall
+  EXPECT_FALSE(g.world.is_occupied(24.9, 24.9));
+  const ReachableArea point = reachable_free_area(g.world, {g.start.x, g.start.y}, 0.0);
+  EXPECT_EQ(point.reachable_cells, g.world.free_cell_count());
+  const ReachableArea disc = reachable_free_area(g.world, {g.start.x, g.start.y}, 0.25);
+  // Only the corners of the square, which a disc cannot sweep, and the half-cell margin of the
+  // conservative inflation are lost.
+  EXPECT_GT(disc.area_m2, 0.999 * g.world.free_area_m2());
+  MazeOptions odd;
+  odd.side = 24.0;
+  EXPECT_THROW(odd.validate(), std::invalid_argument);
+}
+
+TEST(WorldReachability, WideDiscCannotPassANarrowGap) {
+  // Two 2 m rooms joined by a 0.4 m gap: a point passes, a 0.25 m disc does not.
+  World w(80, 40, 0.05, {0, 0}, World::kFree);
+  w.fill_rect({1.95, 0.0}, {2.05, 2.0}, World::kOccupied);
+  w.fill_rect({1.95, 0.8}, {2.05, 1.2}, World::kFree);
+  EXPECT_EQ(reachable_free_area(w, {1.0, 1.0}, 0.0).reachable_cells, w.free_cell_count());
+  const ReachableArea disc = reachable_free_area(w, {1.0, 1.0}, 0.25);
+  EXPECT_NEAR(disc.area_m2, 1.95 * 2.0, 0.1);
+  EXPECT_FALSE(reachable_free_area(w, {2.0, 0.1}, 0.25).start_valid);
+}
+
+}  // namespace
+}  // namespace lookahead::exploration
