@@ -48,6 +48,19 @@ TEST(ScanInserter, NoReturnsLeaveTheMapUntouched) {
   EXPECT_FALSE(g.known_bounds(lo, hi));
 }
 
+TEST(ScanInserter, NoReturnsClearUpToMaxRangeWhenAsked) {
+  OccupancyGrid g;
+  LaserScan s = single_beam(std::numeric_limits<float>::infinity());
+  s.max_range = 1.0;
+  InsertOptions o;
+  o.clear_no_returns = true;
+  insert_scan(g, {0.025, 0.025, 0.0}, s, o);
+  EXPECT_LT(g.probability({19, 0}), 0.5);
+  EXPECT_LT(g.probability({20, 0}), 0.5);  // free to the max range, no obstacle at its end
+  EXPECT_FALSE(g.is_obstacle({20, 0}));
+  EXPECT_FALSE(g.is_known({21, 0}));
+}
+
 TEST(ScanInserter, LaserOffsetMovesTheOrigin) {
   OccupancyGrid g;
   LaserScan s = single_beam(1.0f);

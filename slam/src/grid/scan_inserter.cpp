@@ -51,15 +51,17 @@ bool miss_changes(const GridTile* t, int i, int floor) {
 }
 
 std::vector<BeamEnd> beam_ends(const OccupancyGrid& grid, const Pose2& laser,
-                               const LaserScan& scan, double usable) {
+                               const LaserScan& scan, const InsertOptions& options) {
+  const double usable = options.max_usable_range;
   std::vector<BeamEnd> ends;
   ends.reserve(scan.ranges.size());
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    if (!scan.is_return(i)) continue;
-    const double r = std::min<double>(scan.ranges[i], usable);
+    const bool clear = !scan.is_return(i) && options.clear_no_returns;
+    if (!scan.is_return(i) && !clear) continue;
+    const double r = clear ? std::min(scan.max_range, usable) : std::min<double>(scan.ranges[i], usable);
     const double a = laser.theta + scan.bearing(i);
     ends.push_back({grid.cell_at(laser.x + r * std::cos(a), laser.y + r * std::sin(a)),
-                    scan.ranges[i] < usable});
+                    !clear && scan.ranges[i] < usable});
   }
   return ends;
 }
@@ -70,7 +72,7 @@ void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan,
                  const InsertOptions& options) {
   const Pose2 laser = robot.compose(scan.laser_offset);
   const CellIndex origin = grid.cell_at(laser.x, laser.y);
-  const std::vector<BeamEnd> ends = beam_ends(grid, laser, scan, options.max_usable_range);
+  const std::vector<BeamEnd> ends = beam_ends(grid, laser, scan, options);
   TileCursor cursor(grid);
   for (const BeamEnd& e : ends) {  // phase 1: mark this scan's hits
     if (e.hit) cursor.at(e.cell).flags[OccupancyGrid::local(e.cell)] |= GridTile::kHitThisScan;

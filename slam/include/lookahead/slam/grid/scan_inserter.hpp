@@ -16,13 +16,17 @@ struct InsertOptions {
   /// Beams are used up to this range; longer readings clear free space up to it but mark
   /// no obstacle (far readings are too noisy in angle to place a wall) [m].
   double max_usable_range = 30.0;
+  /// Treat no-returns as free space up to the scan's max range. Off for real lasers (a
+  /// missing echo may be glass or a dark surface, as GMapping assumes); on for simulated
+  /// ones, whose no-return means exactly "nothing within range".
+  bool clear_no_returns = false;
 };
 
 /// Inserts `scan` taken at robot pose `robot` into `grid`. Every cell a beam crosses gets
 /// one miss, every cell a beam ends in gets one hit. Hits are marked before the misses are
 /// cast, so a beam grazing a wall does not erase the endpoint of its neighbour in the same
-/// scan (the two-phase update of OctoMap). No-returns are skipped, as GMapping does: a
-/// missing echo says nothing reliable about where free space ends.
+/// scan (the two-phase update of OctoMap). No-returns are skipped unless
+/// options.clear_no_returns says otherwise.
 void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan,
                  const InsertOptions& options);
 

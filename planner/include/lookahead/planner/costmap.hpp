@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: MIT
+// Binary traversability raster for a disc robot, built from an occupancy grid.
+//
+// A cell is blocked when its occupancy probability reaches `occupied_threshold`, or when it
+// was never observed (unless `unknown_is_free`). Blocked cells are then inflated by the robot
+// radius with an exact Euclidean distance transform (Felzenszwalb & Huttenlocher, "Distance
+// Transforms of Sampled Functions", Theory of Computing 8, 2012): a cell is blocked when its
+// centre lies within `robot_radius` of the centre of a blocked cell. After inflation the robot
+// is a point: a centre position is collision-free exactly when its cell is free. This is the
+// inscribed-radius convention of ROS costmaps. Distances run between cell centres, so a robot
+// anywhere inside a free cell may come up to one cell diagonal (7 cm at 5 cm cells) closer
+// to an occupied cell than `robot_radius`: give the radius that much slack when it matters.
+//
+// The raster covers the grid's known bounds plus `margin`; everything outside it is blocked.
+// Cells share the grid's indexing (same resolution and origin), so slam::CellIndex values of
+// the grid address the costmap too. The costmap is an immutable snapshot: rebuild it when the
+// map changes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lookahead/planner/path.hpp"
+#include "lookahead/slam/grid/cell_index.hpp"
+#include "lookahead/slam/grid/occupancy_grid.hpp"
+
+namespace lookahead::planner {
+
+struct CostmapOptions {
+  /// A known cell is an obstacle when its occupancy probability is >= this, (0.5, 1].
+  double occupied_threshold = 0.65;
+  /// Never-observed cells are traversable when true (optimistic planning into the unknown);
+  /// by default they are obstacles.
+  bool unknown_is_free = false;
+  /// Inflation radius: the robot's circumscribed radius [m], [0, 5].
+  double robot_radius = 0.25;
+  /// Unknown border added around the known bounds [m], [0, 50]; useful with unknown_is_free.
+  double margin = 0.5;
+};
+
+/// Throws std::invalid_argument naming the field and value when an option is out of range.
+void validate(const CostmapOptions& options);
+
+class Costmap {
+ public:
+  /// An empty costmap: every query answers "blocked".
+  Costmap() = default;
+  /// Snapshot of `map` (validates `options`). Cost: O(cells) for the raster and inflation.
+  Costmap(const slam::OccupancyGrid& map, const CostmapOptions& options);
+
+  [[nodiscard]] const CostmapOptions& options() const { return options_; }
+  [[nodiscard]] double resolution() const { return resolution_; }
+  [[nodiscard]] bool empty() const { return width_ == 0 || height_ == 0; }
+  [[nodiscard]] int width() const { return width_; }    ///< cells along x
+  [[nodiscard]] int height() const { return height_; }  ///< cells along y
+  /// Cell of the raster's lower-left corner, in the grid's indexing.
+  [[nodiscard]] slam::CellIndex origin() const { return origin_; }
+  /// Metric extent of the raster: [min_corner, max_corner) [m].
+  [[nodiscard]] Point2 min_corner() const;
+  [[nodiscard]] Point2 max_corner() const;
+
+  /// The cell containing a position (floor, like slam::OccupancyGrid::cell_at).
+  [[nodiscard]] slam::CellIndex cell_at(Point2 p) const;
+  [[nodiscard]] Point2 cell_center(slam::CellIndex c) const;
+  [[nodiscard]] bool contains(slam::CellIndex c) const;
+
+  /// Free after inflation; cells outside the raster are blocked.
+  [[nodiscard]] bool cell_is_free(slam::CellIndex c) const;
+  [[nodiscard]] bool is_free(double x, double y) const { return cell_is_free(cell_at({x, y})); }
+  [[nodiscard]] bool is_free(Point2 p) const { return cell_is_free(cell_at(p)); }
+  /// True when every cell the segment a-b passes through is free. Exact at cell resolution:
+  /// a segment through a cell corner touches all four cells there, so it never slips
+  /// diagonally between two blocked cells.
+  [[nodiscard]] bool segment_is_free(Point2 a, Point2 b) const;
+  /// Every segment of the path is free (a single waypoint: that cell is free).
+  [[nodiscard]] bool path_is_free(const Path& path) const;
+
+  [[nodiscard]] std::size_t free_cell_count() const;
+
+ private:
+  [[nodiscard]] std::size_t index(int local_x, int local_y) const {
+    return static_cast<std::size_t>(local_y) * static_cast<std::size_t>(width_) +
+           static_cast<std::size_t>(local_x);
+  }
+  void mark_blocked_cells(const slam::OccupancyGrid& map, std::vector<std::uint8_t>& blocked) const;
+
+  CostmapOptions options_;
+  double resolution_ = 0.05;
+  slam::CellIndex origin_;
+  int width_ = 0;
+  int height_ = 0;
+  std::vector<std::uint8_t> free_;  ///< 1 = free after inflation, row-major from origin_
+};
+
+}  // namespace lookahead::planner

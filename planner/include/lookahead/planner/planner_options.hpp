@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// Every parameter of plan(), with the costmap's nested. The defaults here are the only copy.
+#pragma once
+
+#include <cstdint>
+
+#include "lookahead/planner/costmap.hpp"
+
+namespace lookahead::planner {
+
+/// The sampling-based planners plan() offers, all asymptotically optimal for path length.
+enum class PlannerAlgorithm {
+  /// RRT*: Karaman & Frazzoli, "Sampling-based algorithms for optimal motion planning",
+  /// IJRR 30(7), 2011, Alg. 6 (OMPL's k-nearest variant).
+  kRrtStar,
+  /// PRM*: same paper, Alg. 4 (k-nearest connections, no expansion step).
+  kPrmStar,
+  /// Informed RRT*: Gammell, Srinivasa & Barfoot, IROS 2014: RRT* that, once a path of length
+  /// c exists, samples only the ellipse of points that could shorten it.
+  kInformedRrtStar,
+};
+
+[[nodiscard]] const char* to_string(PlannerAlgorithm algorithm);
+
+struct PlannerOptions {
+  PlannerAlgorithm algorithm = PlannerAlgorithm::kRrtStar;
+  /// Wall-clock budget of the search [s], (0, 60]. The planners are anytime: they keep
+  /// shortening the path until the budget (or max_samples) is spent. Costmap construction
+  /// and path simplification come on top (linear-time passes, milliseconds).
+  double time_budget = 0.5;
+  /// Stop after this many samples as well, 0 = no limit, [0, 1e8]. When the search ends by
+  /// this count, not by the clock, the result depends on `seed` only (see determinism in
+  /// plan.hpp).
+  std::int64_t max_samples = 0;
+  /// A path may end this close to the goal [m], [0, 5]; the exact goal is appended when the
+  /// last segment to it is free.
+  double goal_tolerance = 0.1;
+  /// Longest tree edge of RRT* / Informed RRT* [m], [0, 1000]; 0 = OMPL's default (20 % of
+  /// the costmap's diagonal).
+  double range = 0.0;
+  /// Probability of steering RRT* / Informed RRT* towards the goal, [0, 1].
+  double goal_bias = 0.05;
+  /// Shortcut and B-spline smoothing (OMPL PathSimplifier) of the found path.
+  bool simplify = true;
+  /// Seed of every random draw of one plan() call, [0, 2^32).
+  std::uint32_t seed = 1;
+  CostmapOptions costmap;
+};
+
+/// Throws std::invalid_argument naming the field and value when an option is out of range
+/// (the nested costmap options included).
+void validate(const PlannerOptions& options);
+
+}  // namespace lookahead::planner

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/planner/costmap.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "distance_transform.hpp"
+#include "option_check.hpp"
+#include "segment_walk.hpp"
+
+namespace lookahead::planner {
+
+void validate(const CostmapOptions& o) {
+  detail::check_range("CostmapOptions.occupied_threshold", o.occupied_threshold, 0.5, 1.0, "",
+                      detail::Bound::kOpen);
+  detail::check_range("CostmapOptions.robot_radius", o.robot_radius, 0.0, 5.0, "m");
+  detail::check_range("CostmapOptions.margin", o.margin, 0.0, 50.0, "m");
+}
+
+Costmap::Costmap(const slam::OccupancyGrid& map, const CostmapOptions& options)
+    : options_((validate(options), options)), resolution_(map.resolution()) {
+  slam::CellIndex lo, hi;
+  if (!map.known_bounds(lo, hi)) return;  // nothing observed: an empty (all-blocked) costmap
+  const int margin_cells = static_cast<int>(std::ceil(options.margin / resolution_));
+  origin_ = {lo.x - margin_cells, lo.y - margin_cells};
+  width_ = hi.x - lo.x + 1 + 2 * margin_cells;
+  height_ = hi.y - lo.y + 1 + 2 * margin_cells;
+
+  std::vector<std::uint8_t> blocked(static_cast<std::size_t>(width_) *
+                                    static_cast<std::size_t>(height_));
+  mark_blocked_cells(map, blocked);
+  // Inflation: free only if no blocked centre lies within the radius (squared, in cells^2).
+  const std::vector<double> d2 = detail::squared_distance_transform(blocked, width_, height_);
+  const double radius_cells = options.robot_radius / resolution_;
+  // The epsilon keeps a centre at exactly the radius blocked despite rounding of the division.
+  const double limit = radius_cells * radius_cells + 1e-9;
+  free_.resize(d2.size());
+  for (std::size_t i = 0; i < d2.size(); ++i) free_[i] = d2[i] > limit ? 1 : 0;
+}
+
+void Costmap::mark_blocked_cells(const slam::OccupancyGrid& map,
+                                 std::vector<std::uint8_t>& blocked) const {
+  // p >= threshold  <=>  log-odds >= logit(threshold): comparing fixed-point log-odds saves
+  // an exp() per cell and reads the same decision as OccupancyGrid::probability().
+  const double logit = std::log(options_.occupied_threshold / (1.0 - options_.occupied_threshold));
+  const double occupied_fixed = logit * slam::GridTile::kLogOddsScale;
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      const std::int16_t l = map.raw_log_odds({origin_.x + x, origin_.y + y});
+      const bool unknown = l == slam::GridTile::kUnknown;
+      const bool is_blocked = unknown ? !options_.unknown_is_free : l >= occupied_fixed;
+      blocked[index(x, y)] = is_blocked ? 1 : 0;
+    }
+  }
+}
+
+Point2 Costmap::min_corner() const { return {origin_.x * resolution_, origin_.y * resolution_}; }
+
+Point2 Costmap::max_corner() const {
+  return {(origin_.x + width_) * resolution_, (origin_.y + height_) * resolution_};
+}
+
+slam::CellIndex Costmap::cell_at(Point2 p) const {
+  // Same floor rule as slam::OccupancyGrid::cell_at, so both agree on every position.
+  return {static_cast<int>(std::floor(p.x / resolution_)),
+          static_cast<int>(std::floor(p.y / resolution_))};
+}
+
+Point2 Costmap::cell_center(slam::CellIndex c) const {
+  return {(c.x + 0.5) * resolution_, (c.y + 0.5) * resolution_};
+}
+
+bool Costmap::contains(slam::CellIndex c) const {
+  return c.x >= origin_.x && c.y >= origin_.y && c.x < origin_.x + width_ &&
+         c.y < origin_.y + height_;
+}
+
+bool Costmap::cell_is_free(slam::CellIndex c) const {
+  return contains(c) && free_[index(c.x - origin_.x, c.y - origin_.y)] != 0;
+}
+
+bool Costmap::segment_is_free(Point2 a, Point2 b) const {
+  if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) {
+    return false;
+  }
+  return detail::walk_segment(a.x / resolution_, a.y / resolution_, b.x / resolution_,
+                              b.y / resolution_, [this](int x, int y, double) {
+                                return cell_is_free({x, y});
+                              });
+}
+
+bool Costmap::path_is_free(const Path& path) const {
+  if (path.empty()) return false;
+  if (path.size() == 1) return is_free(path.front());
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    if (!segment_is_free(path[i - 1], path[i])) return false;
+  }
+  return true;
+}
+
+std::size_t Costmap::free_cell_count() const {
+  return static_cast<std::size_t>(std::count(free_.begin(), free_.end(), std::uint8_t{1}));
+}
+
+}  // namespace lookahead::planner
