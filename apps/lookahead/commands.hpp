@@ -13,5 +13,6 @@ using Run = std::function<int()>;
 Run add_slam_command(CLI::App& app);
 Run add_eval_command(CLI::App& app);
 Run add_config_command(CLI::App& app);
+Run add_explore_command(CLI::App& app);
 
 }  // namespace lookahead::app

@@ -77,3 +77,31 @@ TEST_F(Cli, MissingFilesAndBadConfigsAreErrorsNotCrashes) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, ExploreWritesMapPicturesAnimationAndRunJson) {
+  const Result r = shell(bin + " explore --time-limit 40 --particles 5 --log --out " + dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* f : {"map.pgm", "map.yaml", "map.png", "coverage.png", "animation.mp4", "trajectory.txt",
+                        "run.json", "run.log"}) {
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  }
+  nlohmann::json j;
+  std::ifstream(dir / "run.json") >> j;
+  EXPECT_EQ(j["status"], "time_limit");
+  EXPECT_EQ(j["collisions"].get<int>(), 0);
+  EXPECT_GT(j["coverage"].get<double>(), 0.02);
+  // The simulated run replays through `lookahead slam`.
+  const Result replay = shell(bin + " slam " + (dir / "run.log").string() + " --particles 5 --out " + (dir / "replay").string());
+  EXPECT_EQ(replay.code, 0) << replay.output;
+}
+
+TEST_F(Cli, ExploreRejectsBadWorldsAndStrategies) {
+  EXPECT_NE(shell(bin + " explore --world /no/such.yaml --out " + dir.string()).code, 0);
+  const Result r = shell(bin + " explore --strategy random --out " + dir.string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("random"), std::string::npos) << r.output;
+}
+
+}  // namespace

@@ -20,7 +20,9 @@ cv::Mat render_occupancy(const ProbabilityMap& map, int scale) {
     for (int x = 0; x < map.width; ++x) {
       const double p = map.at(x, y);
       cv::Vec3b v;
-      if (p < 0) {
+      if (p == -0.5) {
+        v = {200, 188, 180};  // unknown, but a true wall there (exploration pictures)
+      } else if (p < 0) {
         v = {228, 220, 214};  // unknown: pale blue-grey, so it is not mistaken for free space
       } else {
         const auto g = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - p)));

@@ -10,7 +10,8 @@
 
 namespace lookahead::slam {
 
-/// A map read back from disk: occupancy probability per pixel, -1 for unknown.
+/// A map read back from disk: occupancy probability per pixel, -1 for unknown (pictures
+/// also accept -0.5: unknown to the robot, an obstacle in the true world).
 /// Row 0 is the bottom row (y grows up), unlike the image file.
 struct ProbabilityMap {
   int width = 0;

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// `lookahead explore`: one exploration mission in the simulator, with its map, pictures,
+// coverage curve, animation and run.json.
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "commands.hpp"
+#include "lookahead/exploration/animation_writer.hpp"
+#include "lookahead/exploration/mission.hpp"
+#include "lookahead/exploration/mission_picture.hpp"
+#include "lookahead/exploration/mission_report.hpp"
+#include "lookahead/exploration/world_source.hpp"
+#include "lookahead/planner/ompl_logging.hpp"
+#include "progress_bar.hpp"
+
+namespace lookahead::app {
+namespace {
+
+struct ExploreArgs {
+  exploration::WorldSpec world;
+  std::string strategy = "nearest";
+  std::string pose = "slam";
+  std::uint64_t seed = 1;
+  std::string out = "out/explore";
+  int particles = 30;
+  double time_limit = 3600.0;
+  double coverage_goal = 0.99;
+  std::vector<double> start;
+  bool animation = true;
+  bool log = false;
+};
+
+exploration::MissionOptions mission_options(const ExploreArgs& a) {
+  exploration::MissionOptions o = exploration::MissionOptions::defaults();
+  o.strategy = a.strategy;
+  o.seed = a.seed;
+  o.slam.particles = a.particles;
+  o.time_limit = a.time_limit;
+  o.coverage_goal = a.coverage_goal;
+  if (a.pose == "truth") o.pose_source = exploration::PoseSource::kTruth;
+  else if (a.pose != "slam") throw std::invalid_argument("--pose must be slam or truth, not '" + a.pose + "'");
+  o.harmonize();
+  return o;
+}
+
+int run_explore(ExploreArgs a) {
+  planner::set_ompl_log_level(planner::OmplLogLevel::kWarn);
+  const exploration::MissionOptions options = mission_options(a);
+  a.world.seed = a.seed;
+  if (a.start.size() == 3) a.world.start = slam::Pose2{a.start[0], a.start[1], a.start[2]};
+  const exploration::GeneratedWorld world = exploration::load_world(a.world, options.robot.radius);
+  spdlog::info("world {}: {:.1f} m x {:.1f} m, start ({:.2f}, {:.2f}); strategy {}, pose {}, seed {}",
+               a.world.name, world.world.width_m(), world.world.height_m(), world.start.x, world.start.y,
+               a.strategy, a.pose, a.seed);
+  std::filesystem::create_directories(a.out);
+  exploration::Mission mission(world.world, world.start, options);
+  if (a.log) mission.record_log(a.out + "/run.log");
+  std::unique_ptr<exploration::AnimationWriter> video;
+  if (a.animation) video = std::make_unique<exploration::AnimationWriter>(a.out + "/animation.mp4", 10.0);
+  ProgressBar bar("explore", 100);
+  double next_frame = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  mission.run([&](const exploration::Mission& m) {
+    bar.update(static_cast<std::size_t>(m.coverage() * 100),
+               fmt::format("t {:.0f}s coverage {:.1f}%", m.time(), 100 * m.coverage()));
+    if (video && m.time() >= next_frame) {
+      video->add(exploration::render_mission(m, fmt::format("{}  t = {:.0f} s", a.world.name, m.time())));
+      next_frame = m.time() + options.frame_period;
+    }
+  });
+  bar.finish();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (video) video->close();
+  const exploration::MissionSummary s = exploration::summarize(mission, a.world.name, wall);
+  exploration::write_mission_outputs(mission, s, a.out);
+  spdlog::info("{}: {:.0f} s simulated, {:.1f} m driven, coverage {:.1f}%, {} collision(s); "
+               "{:.1f} s wall ({:.0f}x real time); wrote {}/map.png",
+               s.status, s.simulated_time, s.path_length, 100 * s.coverage, s.statistics.collisions, wall,
+               s.real_time_factor, a.out);
+  return mission.status() == exploration::MissionStatus::kCollision ? 3 : 0;
+}
+
+}  // namespace
+
+Run add_explore_command(CLI::App& app) {
+  auto a = std::make_shared<ExploreArgs>();
+  app.add_option("--world", a->world.name, "office | maze | map .yaml | Stage .world | image")->capture_default_str();
+  app.add_option("--resolution", a->world.image_resolution, "m/pixel of a plain image world")->capture_default_str();
+  app.add_option("--start", a->start, "start pose x y theta (default: the world's)")->expected(3);
+  app.add_option("--strategy", a->strategy, "nearest | utility")->capture_default_str();
+  app.add_option("--pose", a->pose, "slam (RBPF in the loop) | truth (planner-only)")->capture_default_str();
+  app.add_option("--seed", a->seed, "seed of the world, sensor, odometry, SLAM and planner")->capture_default_str();
+  app.add_option("--particles", a->particles, "RBPF particles")->capture_default_str();
+  app.add_option("--time-limit", a->time_limit, "simulated seconds")->capture_default_str();
+  app.add_option("--coverage-goal", a->coverage_goal, "stop at this share of the reachable area")->capture_default_str();
+  app.add_option("--out", a->out, "output folder")->capture_default_str();
+  app.add_flag("!--no-animation", a->animation, "skip animation.mp4");
+  app.add_flag("--log", a->log, "also write the run as a CARMEN log (run.log)");
+  return [a] { return run_explore(*a); };
+}
+
+}  // namespace lookahead::app

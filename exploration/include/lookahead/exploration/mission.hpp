@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+// An exploration mission: a simulated robot explores a world until it is mapped. Each step
+// is one laser period: sense (scan and odometry into the RBPF, or into a map at the true
+// pose), refresh (costmap, frontiers, path validity), decide (a new target when needed),
+// act (pure pursuit -> unicycle, collisions checked against the true world), record.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "lookahead/exploration/frontier_detector.hpp"
+#include "lookahead/exploration/goal_blacklist.hpp"
+#include "lookahead/exploration/mission_metrics.hpp"
+#include "lookahead/exploration/mission_options.hpp"
+#include "lookahead/exploration/target_strategy.hpp"
+#include "lookahead/exploration/world.hpp"
+#include "lookahead/planner/costmap.hpp"
+#include "lookahead/planner/path_follower.hpp"
+#include "lookahead/slam/rbpf/rbpf.hpp"
+
+namespace lookahead::exploration {
+
+class CarmenWriter;
+
+enum class MissionStatus {
+  kRunning,
+  kCoverageReached,  ///< the coverage goal was met
+  kDone,             ///< no reachable frontier is left
+  kTrapped,          ///< frontiers are left but the robot cannot get to any of them
+  kTimeLimit,        ///< the simulated time limit was reached
+  kCollision,        ///< the robot touched a wall of the true world: a failure
+};
+const char* to_string(MissionStatus status);
+
+struct MissionStatistics {
+  int selections = 0, plans = 0, plan_failures = 0, replans = 0, stuck_goals = 0;
+  double planning_time = 0.0;  ///< wall clock [s]
+  int collisions = 0;
+  int safety_stops = 0;  ///< steps the reactive stop held the robot
+  std::size_t scans = 0, map_refreshes = 0;
+};
+
+class Mission {
+ public:
+  Mission(const World& world, const slam::Pose2& start, const MissionOptions& options);
+  ~Mission();
+
+  /// Writes the simulated run as a CARMEN log (ODOM + FLASER) that `lookahead slam` replays.
+  void record_log(const std::string& path);
+  /// One laser period. Returns the status after it.
+  MissionStatus step();
+  /// Steps until the mission ends; `every_second` is called once per simulated second.
+  MissionStatus run(const std::function<void(const Mission&)>& every_second = nullptr);
+
+  [[nodiscard]] MissionStatus status() const { return status_; }
+  [[nodiscard]] double time() const { return time_; }
+  [[nodiscard]] double path_length() const { return path_length_; }
+  [[nodiscard]] double coverage() const { return curve_.empty() ? 0.0 : curve_.back().coverage; }
+  [[nodiscard]] const slam::OccupancyGrid& map() const;
+  [[nodiscard]] slam::Pose2 estimate() const;
+  [[nodiscard]] const slam::Pose2& truth() const { return robot_.pose(); }
+  [[nodiscard]] const std::vector<slam::Pose2>& true_path() const { return true_path_; }
+  [[nodiscard]] const std::vector<slam::Pose2>& estimated_path() const { return estimated_path_; }
+  [[nodiscard]] const std::vector<CoverageSample>& coverage_curve() const { return curve_; }
+  [[nodiscard]] const FrontierDetector& frontiers() const { return frontiers_; }
+  [[nodiscard]] const std::optional<planner::Point2>& goal() const { return goal_; }
+  [[nodiscard]] const planner::Path* current_path() const { return follower_ ? &follower_->path() : nullptr; }
+  [[nodiscard]] const MissionStatistics& statistics() const { return stats_; }
+  [[nodiscard]] const ReachableArea& reachable() const { return reachable_; }
+  [[nodiscard]] const World& world() const { return world_; }
+  [[nodiscard]] const MissionOptions& options() const { return options_; }
+  [[nodiscard]] const slam::Pose2& start() const { return start_; }
+  [[nodiscard]] const slam::Rbpf* slam() const { return rbpf_.get(); }
+
+ private:
+  void sense();
+  void refresh();
+  void decide();
+  void act();
+  void record();
+  void check_end();
+  bool goal_still_useful() const;
+  bool path_ahead_blocked(double v) const;
+
+  const World& world_;
+  MissionOptions options_;
+  slam::Pose2 start_;
+  Robot robot_;
+  LaserSimulator laser_;
+  OdometryModel odometry_;
+  std::unique_ptr<slam::Rbpf> rbpf_;
+  slam::OccupancyGrid truth_map_;
+  ReachableArea reachable_;
+  CoverageMeter meter_;
+  FrontierDetector frontiers_;
+  GoalBlacklist blacklist_;
+  std::unique_ptr<TargetStrategy> strategy_;
+  planner::Costmap costmap_;
+  std::unique_ptr<planner::PathFollower> follower_;
+  std::optional<planner::Point2> goal_;
+  std::unique_ptr<CarmenWriter> log_;
+  slam::LaserScan last_scan_;
+
+  MissionStatus status_ = MissionStatus::kRunning;
+  MissionStatistics stats_;
+  double time_ = 0.0, path_length_ = 0.0, turned_ = 0.0;
+  double next_goal_check_ = 0.0, next_metrics_ = 0.0;
+  double best_goal_distance_ = 0.0, last_progress_time_ = 0.0;
+  int unreachable_streak_ = 0;
+  bool map_changed_ = false;
+  std::size_t last_resamplings_ = 0, last_best_ = 0;
+  slam::Pose2 last_refresh_pose_;
+  std::vector<slam::Pose2> true_path_, estimated_path_;
+  std::vector<CoverageSample> curve_;
+};
+
+}  // namespace lookahead::exploration

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// Every parameter of an exploration mission, nested by component. Defaults follow the
+// P-SLAM paper's Stage setup where it gives one (P3-DX at 0.2 m/s, SICK LMS-200 180 deg).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "lookahead/exploration/frontier_detector.hpp"
+#include "lookahead/exploration/goal_blacklist.hpp"
+#include "lookahead/exploration/laser_simulator.hpp"
+#include "lookahead/exploration/odometry_model.hpp"
+#include "lookahead/exploration/robot.hpp"
+#include "lookahead/planner/path_follower.hpp"
+#include "lookahead/planner/planner_options.hpp"
+#include "lookahead/slam/rbpf/rbpf_options.hpp"
+
+namespace lookahead::exploration {
+
+enum class PoseSource {
+  kSlam,   ///< the robot localises and maps with the RBPF (SLAM in the loop)
+  kTruth,  ///< the map is built at the true pose (planner-only studies)
+};
+
+struct MissionOptions {
+  std::string strategy = "nearest";  ///< target selection: nearest | utility
+  double utility_lambda = 1.0;       ///< utility = gain [m^2] - lambda * cost [m]
+  PoseSource pose_source = PoseSource::kSlam;
+  std::uint64_t seed = 1;            ///< seeds the sensor, odometry, SLAM and planner
+  double time_limit = 3600.0;        ///< simulated seconds, > 0
+  double coverage_goal = 0.99;       ///< stop at this share of the reachable free area, (0, 1]
+  double goal_check_period = 1.0;    ///< how often the current goal is re-examined [s]
+  double stuck_time = 30.0;          ///< no progress this long: blacklist the goal [s]
+  int max_goal_attempts = 5;         ///< candidates tried per selection before "trapped"
+  double metrics_period = 1.0;       ///< coverage is sampled this often [s]
+  double frame_period = 2.0;         ///< animation frame every [s]; 0 = no animation
+  double initial_turn = 2 * 3.14159265358979;  ///< turn in place at the start [rad]
+  /// The robot's map counts a cell as explored (free) below this occupancy.
+  double free_threshold = 0.35;
+  /// Planning keeps this much more than the robot's radius from walls [m]: pure pursuit
+  /// cuts corners and the costmap's inflation is exact only to a cell.
+  double safety_margin = 0.08;
+  /// A reactive stop: no forward motion while a laser end point lies in the robot's swept
+  /// corridor within this distance ahead of its body [m] (walls the map has not caught up
+  /// with yet).
+  double stop_distance = 0.15;
+
+  slam::RbpfOptions slam;
+  planner::PlannerOptions planner;
+  planner::FollowerOptions follower;
+  FrontierOptions frontiers;
+  BlacklistOptions blacklist;
+  LaserOptions laser;
+  RobotOptions robot;
+  OdometryNoiseOptions odometry;
+
+  /// The defaults above, with the dependent settings made consistent (robot radius and
+  /// speed in the planner, follower and frontier options, 10 Hz updates of the RBPF...).
+  static MissionOptions defaults();
+  /// Re-derives the dependent settings after a change (call after editing robot/laser).
+  void harmonize();
+  void validate() const;  ///< throws std::invalid_argument naming the field
+};
+
+}  // namespace lookahead::exploration

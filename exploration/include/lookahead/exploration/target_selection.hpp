@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// One target selection of a mission: price every frontier cluster (travel cost by Dijkstra
+// on the costmap, information gain on the map), let the strategy rank them, and plan to the
+// best one that the planner can reach; failed goals go on the blacklist.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "lookahead/exploration/frontier_detector.hpp"
+#include "lookahead/exploration/goal_blacklist.hpp"
+#include "lookahead/exploration/target_strategy.hpp"
+#include "lookahead/planner/costmap.hpp"
+#include "lookahead/planner/plan.hpp"
+
+namespace lookahead::exploration {
+
+enum class SelectionOutcome {
+  kPlanned,       ///< a target and a path to it
+  kNoFrontier,    ///< no frontier with a goal is left: done
+  kUnreachable,   ///< frontiers exist, but none can be reached, or all reachable ones were
+                  ///< visited without clearing them: trapped
+  kPlanFailed,    ///< reachable frontiers exist, but the planner found no path this time
+};
+
+struct Selection {
+  SelectionOutcome outcome = SelectionOutcome::kNoFrontier;
+  double goal_x = 0.0, goal_y = 0.0;
+  planner::Path path;
+  int plans = 0, plan_failures = 0;
+  double planning_time = 0.0;  ///< [s], summed over the attempts
+  std::size_t clusters = 0, candidates = 0;
+};
+
+struct SelectionInputs {
+  const slam::OccupancyGrid* map = nullptr;
+  const planner::Costmap* costmap = nullptr;
+  const FrontierDetector* frontiers = nullptr;
+  const TargetStrategy* strategy = nullptr;
+  GoalBlacklist* blacklist = nullptr;
+  slam::Pose2 pose;
+  double now = 0.0;
+  double sensor_range = 8.0;
+  int max_attempts = 5;
+  planner::PlannerOptions planner;
+};
+
+Selection select_target(const SelectionInputs& in);
+
+/// The free cell of `costmap` nearest to (x, y) within `radius` (a robot brushing a wall
+/// may sit in the inflation zone); nullopt when there is none.
+std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, double x, double y, double radius);
+
+}  // namespace lookahead::exploration

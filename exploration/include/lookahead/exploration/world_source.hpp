@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// A world named on the command line or in a study: "office" or "maze" (generated, seeded),
+// or a file: map_server .yaml, Stage .world, or an image (.png/.pgm) with its resolution.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "lookahead/exploration/generated_worlds.hpp"
+
+namespace lookahead::exploration {
+
+struct WorldSpec {
+  std::string name = "office";          ///< office | maze | path to a file
+  double image_resolution = 0.05;       ///< [m/pixel], for plain images only
+  std::optional<slam::Pose2> start;     ///< default: the generator's, or a free spot
+  std::uint64_t seed = 1;               ///< for generated worlds
+};
+
+/// Loads the world and picks the start; errors (ParseError, invalid_argument) name the file.
+GeneratedWorld load_world(const WorldSpec& spec, double robot_radius);
+
+/// A start for a file world: the free spot nearest the middle of the world's free space with
+/// at least `clearance` [m] to any wall, on a 0.25 m lattice.
+slam::Pose2 default_start(const World& world, double clearance);
+
+}  // namespace lookahead::exploration

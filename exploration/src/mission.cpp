@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/exploration/mission.hpp"
+
+#include <cmath>
+
+#include "lookahead/exploration/carmen_writer.hpp"
+#include "lookahead/exploration/target_selection.hpp"
+#include "lookahead/slam/grid/scan_inserter.hpp"
+
+namespace lookahead::exploration {
+
+const char* to_string(MissionStatus s) {
+  switch (s) {
+    case MissionStatus::kRunning: return "running";
+    case MissionStatus::kCoverageReached: return "coverage_reached";
+    case MissionStatus::kDone: return "done";
+    case MissionStatus::kTrapped: return "trapped";
+    case MissionStatus::kTimeLimit: return "time_limit";
+    case MissionStatus::kCollision: return "collision";
+  }
+  return "unknown";
+}
+
+namespace {
+
+MissionOptions checked(MissionOptions o) {
+  o.validate();
+  return o;
+}
+
+}  // namespace
+
+Mission::Mission(const World& world, const slam::Pose2& start, const MissionOptions& options)
+    : world_(world),
+      options_(checked(options)),
+      start_(start),
+      robot_(world, start, options.robot),
+      laser_(world, options.laser),
+      odometry_(start, options.odometry),
+      truth_map_(options.slam.grid),
+      reachable_(reachable_free_area(world, {start.x, start.y}, options.robot.radius)),
+      meter_(world, reachable_, options.free_threshold),
+      frontiers_(options.frontiers),
+      blacklist_(options.blacklist),
+      strategy_(options.strategy == "utility" ? std::make_unique<UtilityStrategy>(options.utility_lambda)
+                                              : make_strategy(options.strategy)) {
+  if (!reachable_.start_valid) throw std::invalid_argument("mission: the start pose is in collision");
+  if (options_.pose_source == PoseSource::kSlam) rbpf_ = std::make_unique<slam::Rbpf>(options_.slam);
+  last_refresh_pose_ = start;
+}
+
+Mission::~Mission() = default;
+
+void Mission::record_log(const std::string& path) {
+  log_ = std::make_unique<CarmenWriter>(path, options_.laser);
+}
+
+const slam::OccupancyGrid& Mission::map() const {
+  return rbpf_ && !rbpf_->particles().empty() ? rbpf_->particles()[rbpf_->best_particle()].map : truth_map_;
+}
+
+slam::Pose2 Mission::estimate() const {
+  return rbpf_ && !rbpf_->particles().empty() ? rbpf_->current_pose() : robot_.pose();
+}
+
+MissionStatus Mission::step() {
+  if (status_ != MissionStatus::kRunning) return status_;
+  sense();    // laser and odometry into the map
+  refresh();  // costmap, frontiers and the current path, after a map update
+  decide();   // a new target when the old one is reached, explored, blocked or stuck
+  act();      // pure pursuit -> unicycle in the true world
+  record();   // coverage, paths
+  check_end();
+  return status_;
+}
+
+MissionStatus Mission::run(const std::function<void(const Mission&)>& every_second) {
+  double next_call = 0.0;
+  while (step() == MissionStatus::kRunning) {
+    if (every_second && time_ >= next_call) {
+      every_second(*this);
+      next_call += 1.0;
+    }
+  }
+  if (every_second) every_second(*this);
+  return status_;
+}
+
+void Mission::sense() {
+  time_ += options_.laser.period();
+  slam::LaserScan scan = laser_.scan(robot_.pose(), time_);
+  scan.odometry = odometry_.pose();
+  ++stats_.scans;
+  last_scan_ = scan;
+  if (log_) {
+    log_->odometry(scan.odometry, 0.0, 0.0, time_);
+    log_->scan(scan);
+  }
+  if (rbpf_) {
+    map_changed_ = rbpf_->add_scan(scan);
+    return;
+  }
+  slam::insert_scan(truth_map_, robot_.pose(), scan, options_.slam.insert);
+  // The map grows every scan; the costmap and frontiers follow at the filter's pace.
+  const slam::Pose2 moved = last_refresh_pose_.between(robot_.pose());
+  map_changed_ = time_ <= options_.laser.period() + 1e-9 || moved.norm() >= options_.slam.linear_update ||
+                 std::abs(moved.theta) >= options_.slam.angular_update;
+}
+
+void Mission::refresh() {
+  if (!map_changed_) return;
+  last_refresh_pose_ = robot_.pose();
+  ++stats_.map_refreshes;
+  const slam::OccupancyGrid& m = map();
+  // After resampling or a change of best particle the map may differ anywhere.
+  const std::size_t resamplings = rbpf_ ? rbpf_->statistics().resamplings : 0;
+  const std::size_t best = rbpf_ ? rbpf_->best_particle() : 0;
+  if (resamplings != last_resamplings_ || best != last_best_ || stats_.map_refreshes == 1) {
+    frontiers_.rebuild(m);
+  } else {
+    const slam::Pose2 p = estimate();
+    const double r = options_.laser.max_range + 1.0;
+    frontiers_.update(m, m.cell_at(p.x - r, p.y - r), m.cell_at(p.x + r, p.y + r));
+  }
+  last_resamplings_ = resamplings;
+  last_best_ = best;
+  costmap_ = planner::Costmap(m, options_.planner.costmap);
+  if (follower_ && !follower_->path_still_valid(costmap_)) {
+    follower_.reset();  // new walls block the path: replan from here
+    ++stats_.replans;
+  }
+}
+
+bool Mission::goal_still_useful() const {
+  if (!goal_) return false;
+  // The goal served its frontier while a frontier cell is still near it.
+  const slam::OccupancyGrid& m = map();
+  const slam::CellIndex g = m.cell_at(goal_->x, goal_->y);
+  const int r = static_cast<int>(std::ceil(1.0 / m.resolution()));
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx)
+      if (frontiers_.cells().count({g.x + dx, g.y + dy})) return true;
+  return false;
+}
+
+void Mission::decide() {
+  if (turned_ < options_.initial_turn || costmap_.empty()) return;
+  bool need = !follower_ || follower_->goal_reached();
+  // A reached goal whose frontier is still there cannot be explored from there (a corner
+  // the sensor cannot see from its goal): do not pick it again for a while.
+  if (follower_ && follower_->goal_reached() && goal_) blacklist_.add(goal_->x, goal_->y, time_);
+  if (!need && time_ >= next_goal_check_) {
+    next_goal_check_ = time_ + options_.goal_check_period;
+    const slam::Pose2 p = estimate();
+    const double d = std::hypot(goal_->x - p.x, goal_->y - p.y);
+    if (d < best_goal_distance_ - 0.2) {
+      best_goal_distance_ = d;
+      last_progress_time_ = time_;
+    }
+    if (time_ - last_progress_time_ > options_.stuck_time) {
+      blacklist_.add(goal_->x, goal_->y, time_);
+      ++stats_.stuck_goals;
+      need = true;
+    } else if (!goal_still_useful()) {
+      need = true;
+    }
+  }
+  if (!need) return;
+  follower_.reset();
+  goal_.reset();
+  blacklist_.expire(time_);
+  SelectionInputs in{&map(), &costmap_, &frontiers_, strategy_.get(), &blacklist_, estimate(), time_,
+                     options_.laser.max_range, options_.max_goal_attempts, options_.planner};
+  in.planner.seed = static_cast<std::uint32_t>(options_.planner.seed + static_cast<std::uint32_t>(stats_.selections));
+  const Selection s = select_target(in);
+  ++stats_.selections;
+  stats_.plans += s.plans;
+  stats_.plan_failures += s.plan_failures;
+  stats_.planning_time += s.planning_time;
+  if (s.outcome == SelectionOutcome::kNoFrontier) {
+    status_ = MissionStatus::kDone;
+  } else if (s.outcome != SelectionOutcome::kPlanned) {
+    // Maybe only for now: turn once more to look around, and give up after three tries.
+    if (++unreachable_streak_ >= 3) status_ = MissionStatus::kTrapped;
+    turned_ = 0.0;
+  } else {
+    unreachable_streak_ = 0;
+    goal_ = planner::Point2{s.goal_x, s.goal_y};
+    follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
+    const slam::Pose2 p = estimate();
+    best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);
+    last_progress_time_ = time_;
+    next_goal_check_ = time_ + options_.goal_check_period;
+  }
+}
+
+void Mission::act() {
+  if (status_ != MissionStatus::kRunning) return;
+  planner::VelocityCommand cmd;
+  if (turned_ < options_.initial_turn) {
+    cmd.omega = options_.robot.max_turn_rate;  // look around before choosing a target
+  } else if (follower_) {
+    cmd = follower_->command(estimate());
+    if (cmd.v > 0 && path_ahead_blocked(cmd.v)) {
+      cmd.v = 0.0;  // turn on the spot only; the costmap will catch up at the next update
+      ++stats_.safety_stops;
+    }
+  }
+  const slam::Pose2 before = robot_.pose();
+  const StepResult r = robot_.step(cmd.v, cmd.omega, options_.laser.period());
+  odometry_.update(before.between(r.pose));
+  path_length_ += r.distance;
+  turned_ += std::abs(r.turned);
+  if (r.collided) {
+    ++stats_.collisions;
+    status_ = MissionStatus::kCollision;
+  }
+}
+
+bool Mission::path_ahead_blocked(double v) const {
+  // The corridor the body sweeps in the next step plus the stop distance, in the laser
+  // (= robot) frame: end points inside it are walls about to be hit.
+  const double half_width = options_.robot.radius + 0.02;
+  const double reach = options_.robot.radius + v * options_.laser.period() + options_.stop_distance;
+  for (std::size_t i = 0; i < last_scan_.ranges.size(); ++i) {
+    if (!last_scan_.is_return(i)) continue;
+    const double a = last_scan_.bearing(i) + last_scan_.laser_offset.theta;
+    const double x = last_scan_.laser_offset.x + last_scan_.ranges[i] * std::cos(a);
+    const double y = last_scan_.laser_offset.y + last_scan_.ranges[i] * std::sin(a);
+    if (x > 0 && x < reach && std::abs(y) < half_width) return true;
+  }
+  return false;
+}
+
+void Mission::record() {
+  if (stats_.scans % 5 == 1) {
+    true_path_.push_back(robot_.pose());
+    estimated_path_.push_back(estimate());
+  }
+  if (time_ >= next_metrics_) {
+    next_metrics_ = time_ + options_.metrics_period;
+    curve_.push_back({time_, path_length_, meter_.coverage(map())});
+  }
+}
+
+void Mission::check_end() {
+  if (status_ != MissionStatus::kRunning) return;
+  if (!curve_.empty() && curve_.back().coverage >= options_.coverage_goal) status_ = MissionStatus::kCoverageReached;
+  else if (time_ >= options_.time_limit) status_ = MissionStatus::kTimeLimit;
+}
+
+}  // namespace lookahead::exploration

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/exploration/mission_options.hpp"
+
+#include <stdexcept>
+
+#include "lookahead/exploration/target_strategy.hpp"
+
+namespace lookahead::exploration {
+
+MissionOptions MissionOptions::defaults() {
+  MissionOptions o;
+  o.slam.particles = 30;
+  // A simulated laser's no-return means "nothing within range": clear free space with it.
+  o.slam.insert.clear_no_returns = true;
+  // Planning ends by a sample count, not the clock: fast, and the same on any machine.
+  o.planner.time_budget = 1.0;
+  o.planner.max_samples = 3000;
+  o.blacklist.lifetime = 120.0;
+  o.planner.costmap.unknown_is_free = true;  // frontier goals border unknown space
+  o.follower.lookahead = 0.35;               // short: cut corners less in doorways
+  o.harmonize();
+  return o;
+}
+
+void MissionOptions::harmonize() {
+  planner.costmap.robot_radius = robot.radius + safety_margin;
+  frontiers.robot_radius = robot.radius + safety_margin;
+  frontiers.free_threshold = free_threshold;
+  follower.max_linear_speed = robot.max_speed;
+  follower.max_turn_rate = robot.max_turn_rate;
+  slam.likelihood.max_range = laser.max_range;
+  laser.seed = seed;
+  odometry.seed = seed + 1;
+  slam.seed = seed + 2;
+  planner.seed = static_cast<std::uint32_t>(seed + 3);
+}
+
+void MissionOptions::validate() const {
+  const auto require = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("mission option out of range: ") + what);
+  };
+  make_strategy(strategy);  // throws on an unknown name
+  require(time_limit > 0, "time_limit > 0");
+  require(coverage_goal > 0 && coverage_goal <= 1, "coverage_goal in (0, 1]");
+  require(goal_check_period > 0 && metrics_period > 0, "periods > 0");
+  require(stuck_time > 0 && max_goal_attempts >= 1, "stuck_time > 0, max_goal_attempts >= 1");
+  require(frame_period >= 0, "frame_period >= 0");
+  require(free_threshold > 0 && free_threshold < 0.5, "free_threshold in (0, 0.5)");
+  require(safety_margin >= 0 && stop_distance >= 0, "safety_margin, stop_distance >= 0");
+  robot.validate();
+  laser.validate();
+  odometry.validate();
+  planner::validate(planner);
+  planner::validate(follower);
+}
+
+}  // namespace lookahead::exploration

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/exploration/target_selection.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "lookahead/exploration/information_gain.hpp"
+#include "lookahead/exploration/travel_cost.hpp"
+
+namespace lookahead::exploration {
+
+std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, double x, double y, double radius) {
+  const slam::CellIndex c = costmap.cell_at({x, y});
+  if (costmap.cell_is_free(c)) return planner::Point2{x, y};
+  const int r = static_cast<int>(std::ceil(radius / costmap.resolution()));
+  std::optional<planner::Point2> best;
+  double best_d = INFINITY;
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      const slam::CellIndex q{c.x + dx, c.y + dy};
+      const double d = std::hypot(dx, dy);
+      if (d <= r && d < best_d && costmap.cell_is_free(q)) {
+        best_d = d;
+        best = costmap.cell_center(q);
+      }
+    }
+  }
+  return best;
+}
+
+namespace {
+
+std::vector<Candidate> price(const SelectionInputs& in, const std::vector<FrontierCluster>& clusters,
+                             const planner::Point2& start, bool& any_reachable) {
+  const planner::Costmap& cm = *in.costmap;
+  const slam::CellIndex lo = cm.origin();
+  const slam::CellIndex hi{lo.x + cm.width() - 1, lo.y + cm.height() - 1};
+  const TravelCost cost(lo, hi, cm.resolution(), cm.cell_at(start),
+                        [&](slam::CellIndex c) { return cm.cell_is_free(c); });
+  std::vector<Candidate> out;
+  any_reachable = false;
+  for (const FrontierCluster& f : clusters) {
+    if (!f.has_goal) continue;
+    const double d = cost.at(cm.cell_at({f.goal_x, f.goal_y}));
+    if (!std::isfinite(d)) continue;
+    any_reachable = true;
+    if (in.blacklist->contains(f.goal_x, f.goal_y, in.now)) continue;
+    out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range)});
+  }
+  return out;
+}
+
+}  // namespace
+
+Selection select_target(const SelectionInputs& in) {
+  Selection s;
+  const std::vector<FrontierCluster> clusters = in.frontiers->clusters(*in.map);
+  s.clusters = clusters.size();
+  if (std::none_of(clusters.begin(), clusters.end(), [](const FrontierCluster& f) { return f.has_goal; })) {
+    return s;  // kNoFrontier
+  }
+  s.outcome = SelectionOutcome::kUnreachable;
+  const auto start = nearest_free(*in.costmap, in.pose.x, in.pose.y, 0.5);
+  if (!start) return s;
+  bool any_reachable = false;
+  std::vector<Candidate> candidates = price(in, clusters, *start, any_reachable);
+  s.candidates = candidates.size();
+  if (!any_reachable) return s;  // kUnreachable: frontiers only beyond gaps the robot cannot pass
+  // Every reachable frontier was tried recently (visited without clearing it, or failed):
+  // frontiers are left that the robot cannot resolve, as good as unreachable.
+  s.outcome = candidates.empty() ? SelectionOutcome::kUnreachable : SelectionOutcome::kPlanFailed;
+  for (int attempt = 0; attempt < in.max_attempts && !candidates.empty(); ++attempt) {
+    const auto pick = in.strategy->choose(candidates);
+    if (!pick) break;
+    const FrontierCluster& target = *candidates[*pick].cluster;
+    const slam::Pose2 from{start->x, start->y, in.pose.theta};
+    planner::PlanResult r = planner::plan(*in.costmap, from, target.goal_x, target.goal_y, in.planner);
+    ++s.plans;
+    s.planning_time += r.planning_time;
+    if (r.status == planner::PlanStatus::kNoPath && in.planner.max_samples > 0) {
+      // The Dijkstra pricing found a way, so a failure is a narrow passage (a door) that a
+      // sample-limited search missed: one more try with four times the samples.
+      planner::PlannerOptions wider = in.planner;
+      wider.max_samples *= 4;
+      r = planner::plan(*in.costmap, from, target.goal_x, target.goal_y, wider);
+      ++s.plans;
+      s.planning_time += r.planning_time;
+    }
+    if (r.solved()) {
+      s.outcome = SelectionOutcome::kPlanned;
+      s.goal_x = target.goal_x;
+      s.goal_y = target.goal_y;
+      s.path = r.path;
+      if (from.x != in.pose.x || from.y != in.pose.y) s.path.insert(s.path.begin(), {in.pose.x, in.pose.y});
+      return s;
+    }
+    ++s.plan_failures;
+    in.blacklist->add(target.goal_x, target.goal_y, in.now);
+    candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(*pick));
+  }
+  return s;
+}
+
+}  // namespace lookahead::exploration

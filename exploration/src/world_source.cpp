@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/exploration/world_source.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "lookahead/exploration/robot.hpp"
+#include "lookahead/exploration/world_loader.hpp"
+#include "lookahead/exploration/world_reachability.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+World load_file(const WorldSpec& spec) {
+  if (ends_with(spec.name, ".yaml") || ends_with(spec.name, ".yml")) return load_map_yaml(spec.name);
+  if (ends_with(spec.name, ".world")) return load_stage_world(spec.name);
+  ImageWorldOptions o;
+  o.resolution = spec.image_resolution;
+  return load_image_world(spec.name, o);
+}
+
+}  // namespace
+
+slam::Pose2 default_start(const World& world, double clearance) {
+  // The middle of the free space, not of the raster: Stage line drawings leave free space
+  // outside the building too, but most of the free area is inside.
+  double mx = 0, my = 0, n = 0;
+  for (int y = 0; y < world.height(); y += 4)
+    for (int x = 0; x < world.width(); x += 4)
+      if (!world.is_occupied(slam::CellIndex{x, y})) {
+        const Eigen::Vector2d c = world.center_of({x, y});
+        mx += c.x(); my += c.y(); n += 1;
+      }
+  if (n == 0) throw std::invalid_argument(world.source() + ": the world has no free space");
+  mx /= n; my /= n;
+  std::optional<slam::Pose2> best;
+  double best_d = INFINITY;
+  for (double y = world.origin().y(); y < world.origin().y() + world.height_m(); y += 0.25) {
+    for (double x = world.origin().x(); x < world.origin().x() + world.width_m(); x += 0.25) {
+      const double d = std::hypot(x - mx, y - my);
+      if (d < best_d && !disc_collides(world, {x, y}, clearance)) {
+        best_d = d;
+        best = slam::Pose2{x, y, 0.0};
+      }
+    }
+  }
+  if (!best) throw std::invalid_argument(world.source() + ": no free spot with the clearance for a start");
+  return *best;
+}
+
+GeneratedWorld load_world(const WorldSpec& spec, double robot_radius) {
+  GeneratedWorld g;
+  if (spec.name == "office") {
+    OfficeOptions o;
+    o.seed = spec.seed;
+    g = make_office(o);
+  } else if (spec.name == "maze") {
+    g = make_pslam_maze();
+  } else {
+    g.world = load_file(spec);
+    g.start = default_start(g.world, std::max(0.6, 2 * robot_radius));
+  }
+  if (spec.start) g.start = *spec.start;
+  if (disc_collides(g.world, {g.start.x, g.start.y}, robot_radius)) {
+    throw std::invalid_argument(spec.name + ": the start (" + std::to_string(g.start.x) + ", " +
+                                std::to_string(g.start.y) + ") is in collision");
+  }
+  return g;
+}
+
+}  // namespace lookahead::exploration

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// Missions on small worlds: they finish, cover the reachable area, never collide, and end
+// with the status that says why.
+#include "lookahead/exploration/mission.hpp"
+
+#include <gtest/gtest.h>
+
+#include "lookahead/exploration/generated_worlds.hpp"
+#include "lookahead/exploration/mission_report.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+MissionOptions quick(PoseSource source, const std::string& strategy = "nearest") {
+  MissionOptions o = MissionOptions::defaults();
+  o.pose_source = source;
+  o.strategy = strategy;
+  o.slam.particles = 10;
+  o.time_limit = 900;
+  o.coverage_goal = 0.95;
+  o.harmonize();
+  return o;
+}
+
+GeneratedWorld small_office() {
+  OfficeOptions o;
+  o.rooms_per_side = 2;
+  o.room_depth = 5.0;
+  return make_office(o);
+}
+
+TEST(Mission, SmallOfficeReaches95PercentWithoutCollision) {
+  for (const std::string strategy : {"nearest", "utility"}) {
+    const GeneratedWorld w = small_office();
+    Mission m(w.world, w.start, quick(PoseSource::kTruth, strategy));
+    const MissionStatus s = m.run();
+    EXPECT_EQ(s, MissionStatus::kCoverageReached) << strategy << ": " << to_string(s);
+    EXPECT_GE(m.coverage(), 0.95) << strategy;
+    EXPECT_EQ(m.statistics().collisions, 0) << strategy;
+    const MissionSummary sum = summarize(m, "small office", 1.0);
+    EXPECT_TRUE(sum.milestones[1].reached);
+    EXPECT_GT(sum.quality.precision, 0.9);
+  }
+}
+
+TEST(Mission, SlamInTheLoopReaches95Percent) {
+  const GeneratedWorld w = small_office();
+  Mission m(w.world, w.start, quick(PoseSource::kSlam));
+  EXPECT_EQ(m.run(), MissionStatus::kCoverageReached);
+  EXPECT_EQ(m.statistics().collisions, 0);
+  EXPECT_LT(std::hypot(m.truth().x - m.estimate().x, m.truth().y - m.estimate().y), 0.3);
+}
+
+// A closed room: once it is seen there is no frontier left.
+TEST(Mission, ClosedRoomEndsDone) {
+  World world(120, 100, 0.05, {0, 0}, World::kOccupied);
+  world.fill_rect({0.5, 0.5}, {5.5, 4.5}, World::kFree);
+  MissionOptions o = quick(PoseSource::kTruth);
+  o.coverage_goal = 1.0;  // never reached exactly: the mission must stop by itself
+  Mission m(world, {3.0, 2.5, 0.0}, o);
+  EXPECT_EQ(m.run(), MissionStatus::kDone);
+  EXPECT_LT(m.time(), 120.0);
+}
+
+// A room whose only way out is a 20 cm slit: the big hall behind it is seen through the
+// slit, but no path leads there.
+TEST(Mission, FrontierBehindANarrowSlitEndsTrapped) {
+  World world(300, 100, 0.05, {0, 0}, World::kOccupied);
+  world.fill_rect({0.5, 0.5}, {4.0, 4.5}, World::kFree);    // the robot's room
+  world.fill_rect({4.0, 2.4}, {4.6, 2.6}, World::kFree);    // the slit
+  world.fill_rect({4.6, 0.5}, {14.5, 4.5}, World::kFree);   // the hall
+  MissionOptions o = quick(PoseSource::kTruth);
+  o.coverage_goal = 1.0;
+  Mission m(world, {2.0, 2.5, 0.0}, o);
+  EXPECT_EQ(m.run(), MissionStatus::kTrapped);
+  if (std::getenv("LOOKAHEAD_DEBUG_DIR")) write_mission_outputs(m, summarize(m, "slit", 1), std::getenv("LOOKAHEAD_DEBUG_DIR"));
+  EXPECT_EQ(m.statistics().collisions, 0);
+}
+
+TEST(Mission, RejectsAStartInAWall) {
+  const GeneratedWorld w = small_office();
+  EXPECT_THROW(Mission(w.world, {0.0, 0.0, 0.0}, quick(PoseSource::kTruth)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace lookahead::exploration
