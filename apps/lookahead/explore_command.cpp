@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 
 #include "commands.hpp"
@@ -30,6 +31,10 @@ struct ExploreArgs {
   std::vector<double> start;
   bool animation = true;
   bool log = false;
+  double laser_range = 0.0;
+  double laser_fov_deg = 0.0;
+  int threads = 0;
+  double robot_radius = 0.0;
 };
 
 exploration::MissionOptions mission_options(const ExploreArgs& a) {
@@ -39,6 +44,10 @@ exploration::MissionOptions mission_options(const ExploreArgs& a) {
   o.slam.particles = a.particles;
   o.time_limit = a.time_limit;
   o.coverage_goal = a.coverage_goal;
+  if (a.laser_range > 0) o.laser.max_range = a.laser_range;
+  if (a.laser_fov_deg > 0) o.laser.fov = a.laser_fov_deg * M_PI / 180.0;
+  o.slam.threads = a.threads;
+  if (a.robot_radius > 0) o.robot.radius = a.robot_radius;
   if (a.pose == "truth") o.pose_source = exploration::PoseSource::kTruth;
   else if (a.pose != "slam") throw std::invalid_argument("--pose must be slam or truth, not '" + a.pose + "'");
   o.harmonize();
@@ -88,6 +97,11 @@ Run add_explore_command(CLI::App& app) {
   auto a = std::make_shared<ExploreArgs>();
   app.add_option("--world", a->world.name, "office | maze | map .yaml | Stage .world | image")->capture_default_str();
   app.add_option("--resolution", a->world.image_resolution, "m/pixel of a plain image world")->capture_default_str();
+  app.add_option("--pixel-rule", a->world.pixel_rule, "stage | only_white (plain images)")->capture_default_str();
+  app.add_option("--laser-range", a->laser_range, "sensor range [m] (default 8, a SICK LMS-200 in Stage)");
+  app.add_option("--laser-fov", a->laser_fov_deg, "sensor field of view [deg] (default 180)");
+  app.add_option("--robot-radius", a->robot_radius, "robot disc radius [m] (default 0.25, a Pioneer 3-DX)");
+  app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores")->capture_default_str();
   app.add_option("--start", a->start, "start pose x y theta (default: the world's)")->expected(3);
   app.add_option("--strategy", a->strategy, "nearest | utility")->capture_default_str();
   app.add_option("--pose", a->pose, "slam (RBPF in the loop) | truth (planner-only)")->capture_default_str();

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `lookahead`: exploration and mapping with structure prediction. See README.md.
+#include <spdlog/cfg/env.h>
 #include <spdlog/spdlog.h>
 
 #include <cstdlib>
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   // Idle OpenMP workers sleep instead of spinning: on a 2-core machine shared with other
   // work a spinning worker steals the core the busy one needs. The user's setting wins.
   setenv("OMP_WAIT_POLICY", "passive", 0);
+  spdlog::cfg::load_env_levels();  // SPDLOG_LEVEL=debug shows the mission's decisions
   CLI::App app{"lookahead: RBPF grid SLAM, exploration and structure prediction"};
   app.require_subcommand(1);
   std::map<CLI::App*, lookahead::app::Run> runs;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/mission.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <cmath>
 
 #include "lookahead/exploration/carmen_writer.hpp"
@@ -173,9 +175,12 @@ void Mission::decide() {
                      options_.laser.max_range, options_.max_goal_attempts, options_.planner};
   in.planner.seed = static_cast<std::uint32_t>(options_.planner.seed + static_cast<std::uint32_t>(stats_.selections));
   const Selection s = select_target(in);
+  spdlog::debug("t {:.1f}: selection {}: clusters {}, candidates {}, plans {} ({} failed)", time_,
+                static_cast<int>(s.outcome), s.clusters, s.candidates, s.plans, s.plan_failures);
   ++stats_.selections;
   stats_.plans += s.plans;
   stats_.plan_failures += s.plan_failures;
+  stats_.grid_fallbacks += s.grid_fallbacks;
   stats_.planning_time += s.planning_time;
   if (s.outcome == SelectionOutcome::kNoFrontier) {
     status_ = MissionStatus::kDone;

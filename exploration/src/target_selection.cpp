@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/target_selection.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -30,13 +32,32 @@ std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, dou
 
 namespace {
 
-std::vector<Candidate> price(const SelectionInputs& in, const std::vector<FrontierCluster>& clusters,
-                             const planner::Point2& start, bool& any_reachable) {
-  const planner::Costmap& cm = *in.costmap;
+TravelCost travel_cost(const planner::Costmap& cm, const planner::Point2& start) {
   const slam::CellIndex lo = cm.origin();
   const slam::CellIndex hi{lo.x + cm.width() - 1, lo.y + cm.height() - 1};
-  const TravelCost cost(lo, hi, cm.resolution(), cm.cell_at(start),
-                        [&](slam::CellIndex c) { return cm.cell_is_free(c); });
+  return TravelCost(lo, hi, cm.resolution(), cm.cell_at(start), [&](slam::CellIndex c) { return cm.cell_is_free(c); });
+}
+
+// The Dijkstra path, string-pulled: each waypoint is the farthest later cell still in free
+// line of sight (the costmap's exact segment check, as the planner's own paths pass).
+planner::Path grid_path(const planner::Costmap& cm, const TravelCost& cost, const planner::Point2& start,
+                        const planner::Point2& goal) {
+  const std::vector<slam::CellIndex> cells = cost.path_to(cm.cell_at(goal));
+  planner::Path path{start};
+  std::size_t i = 0;
+  while (i + 1 < cells.size()) {
+    std::size_t j = cells.size() - 1;
+    while (j > i + 1 && !cm.segment_is_free(path.back(), cm.cell_center(cells[j]))) --j;
+    path.push_back(cm.cell_center(cells[j]));
+    i = j;
+  }
+  if (path.size() > 1) path.back() = goal;
+  return cm.path_is_free(path) ? path : planner::Path{};
+}
+
+std::vector<Candidate> price(const SelectionInputs& in, const std::vector<FrontierCluster>& clusters,
+                             const TravelCost& cost, bool& any_reachable) {
+  const planner::Costmap& cm = *in.costmap;
   std::vector<Candidate> out;
   any_reachable = false;
   for (const FrontierCluster& f : clusters) {
@@ -63,7 +84,8 @@ Selection select_target(const SelectionInputs& in) {
   const auto start = nearest_free(*in.costmap, in.pose.x, in.pose.y, 0.5);
   if (!start) return s;
   bool any_reachable = false;
-  std::vector<Candidate> candidates = price(in, clusters, *start, any_reachable);
+  const TravelCost cost = travel_cost(*in.costmap, *start);
+  std::vector<Candidate> candidates = price(in, clusters, cost, any_reachable);
   s.candidates = candidates.size();
   if (!any_reachable) return s;  // kUnreachable: frontiers only beyond gaps the robot cannot pass
   // Every reachable frontier was tried recently (visited without clearing it, or failed):
@@ -86,6 +108,15 @@ Selection select_target(const SelectionInputs& in) {
       ++s.plans;
       s.planning_time += r.planning_time;
     }
+    if (!r.solved()) {
+      // Deviation from a pure sampling planner: a passage a few cells wide defeats the
+      // sampler, while the Dijkstra price already holds a checked way through it.
+      r.path = grid_path(*in.costmap, cost, *start, {target.goal_x, target.goal_y});
+      if (!r.path.empty()) {
+        r.status = planner::PlanStatus::kSolved;
+        ++s.grid_fallbacks;
+      }
+    }
     if (r.solved()) {
       s.outcome = SelectionOutcome::kPlanned;
       s.goal_x = target.goal_x;
@@ -95,6 +126,8 @@ Selection select_target(const SelectionInputs& in) {
       return s;
     }
     ++s.plan_failures;
+    spdlog::debug("plan to ({:.2f}, {:.2f}) from ({:.2f}, {:.2f}) failed: {} {}", target.goal_x, target.goal_y, from.x,
+                  from.y, planner::to_string(r.status), r.message);
     in.blacklist->add(target.goal_x, target.goal_y, in.now);
     candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(*pick));
   }

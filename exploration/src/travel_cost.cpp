@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/travel_cost.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <queue>
 
@@ -14,6 +15,7 @@ TravelCost::TravelCost(CellIndex lo, CellIndex hi, double resolution, CellIndex 
   if (width_ <= 0 || height_ <= 0) return;
   dist_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_),
                std::numeric_limits<float>::infinity());
+  parent_.assign(dist_.size(), -1);
   const int s = index(start);
   if (s < 0 || !traversable(start)) return;
   using Item = std::pair<float, int>;
@@ -33,14 +35,30 @@ TravelCost::TravelCost(CellIndex lo, CellIndex hi, double resolution, CellIndex 
         const CellIndex n{c.x + dx, c.y + dy};
         const int j = index(n);
         if (j < 0) continue;
-        const float nd = d + ((dx != 0 && dy != 0) ? diagonal : straight);
-        if (nd < dist_[static_cast<std::size_t>(j)] && traversable(n)) {
+        const bool diag = dx != 0 && dy != 0;
+        const float nd = d + (diag ? diagonal : straight);
+        if (nd >= dist_[static_cast<std::size_t>(j)] || !traversable(n)) continue;
+        // No corner cutting: the planner's segment check refuses a diagonal squeeze between
+        // two blocked cells, so the price must not count it as a way through either.
+        if (diag && (!traversable({c.x + dx, c.y}) || !traversable({c.x, c.y + dy}))) continue;
+        {
+          parent_[static_cast<std::size_t>(j)] = i;
           dist_[static_cast<std::size_t>(j)] = nd;
           open.push({nd, j});
         }
       }
     }
   }
+}
+
+std::vector<CellIndex> TravelCost::path_to(CellIndex c) const {
+  std::vector<CellIndex> path;
+  if (!reachable(c)) return path;
+  for (int i = index(c); i >= 0; i = parent_[static_cast<std::size_t>(i)]) {
+    path.push_back({lo_.x + i % width_, lo_.y + i / width_});
+  }
+  std::reverse(path.begin(), path.end());
+  return path;
 }
 
 int TravelCost::index(CellIndex c) const {

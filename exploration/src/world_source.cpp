@@ -20,6 +20,10 @@ World load_file(const WorldSpec& spec) {
   if (ends_with(spec.name, ".world")) return load_stage_world(spec.name);
   ImageWorldOptions o;
   o.resolution = spec.image_resolution;
+  if (spec.pixel_rule == "only_white") o.rule = PixelRule::only_white();
+  else if (spec.pixel_rule != "stage") {
+    throw std::invalid_argument("pixel rule '" + spec.pixel_rule + "' (choose stage or only_white)");
+  }
   return load_image_world(spec.name, o);
 }
 

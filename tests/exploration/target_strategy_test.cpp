@@ -40,6 +40,12 @@ TEST(TravelCost, OctileDistancesAndDetours) {
   EXPECT_GT(t.at({6, 0}), 10.0);  // around the wall's end at y = 9
   EXPECT_FALSE(t.reachable({5, 3}));
   EXPECT_FALSE(t.reachable({20, 20}));
+  const auto path = t.path_to({6, 0});
+  ASSERT_FALSE(path.empty());
+  EXPECT_EQ(path.front(), (slam::CellIndex{0, 0}));
+  EXPECT_EQ(path.back(), (slam::CellIndex{6, 0}));
+  for (const auto c : path) EXPECT_TRUE(free(c));
+  EXPECT_TRUE(t.path_to({5, 3}).empty());
 }
 
 }  // namespace

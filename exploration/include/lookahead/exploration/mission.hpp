@@ -35,7 +35,7 @@ enum class MissionStatus {
 const char* to_string(MissionStatus status);
 
 struct MissionStatistics {
-  int selections = 0, plans = 0, plan_failures = 0, replans = 0, stuck_goals = 0;
+  int selections = 0, plans = 0, plan_failures = 0, replans = 0, stuck_goals = 0, grid_fallbacks = 0;
   double planning_time = 0.0;  ///< wall clock [s]
   int collisions = 0;
   int safety_stops = 0;  ///< steps the reactive stop held the robot

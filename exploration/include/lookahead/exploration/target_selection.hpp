@@ -28,6 +28,7 @@ struct Selection {
   double goal_x = 0.0, goal_y = 0.0;
   planner::Path path;
   int plans = 0, plan_failures = 0;
+  int grid_fallbacks = 0;  ///< paths taken from the Dijkstra price when OMPL found none
   double planning_time = 0.0;  ///< [s], summed over the attempts
   std::size_t clusters = 0, candidates = 0;
 };

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Travel cost from the robot to every reachable cell: Dijkstra over 8-connected traversable
-// cells (steps of 1 and sqrt 2 cells). One run per target selection prices every frontier
+// cells (steps of 1 and sqrt 2 cells; a diagonal step needs both cells beside it free). One run per target selection prices every frontier
 // goal at once, where a planner call per goal would cost a planning budget each.
 #pragma once
 
@@ -21,6 +21,8 @@ class TravelCost {
   /// Distance to a cell [m]; infinity when unreachable or outside the bounds.
   [[nodiscard]] double at(slam::CellIndex c) const;
   [[nodiscard]] bool reachable(slam::CellIndex c) const { return at(c) < kInfinity; }
+  /// The cells of a shortest path from the start to `c` (start first); empty if unreachable.
+  [[nodiscard]] std::vector<slam::CellIndex> path_to(slam::CellIndex c) const;
 
   static constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
@@ -29,6 +31,7 @@ class TravelCost {
   slam::CellIndex lo_, hi_;
   int width_ = 0, height_ = 0;
   std::vector<float> dist_;
+  std::vector<int> parent_;  ///< index of the cell each was reached from, -1 at the start
 };
 
 }  // namespace lookahead::exploration

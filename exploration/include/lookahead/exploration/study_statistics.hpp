@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// The statistics of a study: sample mean and standard deviation, and Welch's unequal-
+// variance t-test (Welch, "The generalization of 'Student's' problem when several different
+// population variances are involved", Biometrika 34, 1947) with the Welch-Satterthwaite
+// degrees of freedom. The p-value comes from the Student t distribution through the
+// regularized incomplete beta function, evaluated by its continued fraction (Abramowitz &
+// Stegun 26.5.8; modified Lentz evaluation).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace lookahead::exploration {
+
+[[nodiscard]] double mean(const std::vector<double>& values);  ///< 0 for no values
+/// Sample standard deviation (divides by n - 1); 0 for fewer than two values.
+[[nodiscard]] double sample_std(const std::vector<double>& values);
+
+/// I_x(a, b) = B(x; a, b) / B(a, b) for a, b > 0 and x in [0, 1] (throws
+/// std::invalid_argument outside), accurate to about 1e-12.
+[[nodiscard]] double regularized_incomplete_beta(double a, double b, double x);
+
+/// P(|T| >= |t|) for T ~ Student t with `df` > 0 degrees of freedom (df need not be whole).
+[[nodiscard]] double student_t_two_sided_p(double t, double df);
+
+struct WelchResult {
+  bool defined = false;  ///< false: `why` says what is missing (too few runs, no variance)
+  std::string why;
+  double t = 0.0;        ///< (mean_a - mean_b) / sqrt(s_a^2 / n_a + s_b^2 / n_b)
+  double df = 0.0;       ///< Welch-Satterthwaite degrees of freedom
+  double p = 1.0;        ///< two-sided
+  double mean_difference = 0.0;  ///< mean_a - mean_b
+};
+
+/// Welch's two-sided t-test of equal means. Needs two values per sample and a non-zero
+/// variance in at least one; otherwise `defined` is false (an expected outcome of a study in
+/// which a strategy rarely reaches its goal, not an error).
+[[nodiscard]] WelchResult welch_t_test(const std::vector<double>& a, const std::vector<double>& b);
+
+}  // namespace lookahead::exploration

@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/exploration/mission_config.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/slam/io/parse_error.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+// The single list of keys: each section visits its fields with (key, field, doc). Loading
+// and dumping both walk it, so the YAML names cannot drift from the structs. Two halves:
+// the mission and the simulated robot, then the planning components.
+template <typename V>
+void visit_robot_sections(MissionOptions& o, V&& v) {
+  v.section("mission");
+  v("strategy", o.strategy, "target selection: nearest | utility");
+  v("utility_lambda", o.utility_lambda, "utility = gain [m^2] - lambda * cost [m]");
+  v("pose_source", o.pose_source, "slam (RBPF in the loop) | truth (map at the true pose)");
+  v("seed", o.seed, "seeds the sensor, odometry, SLAM (filter.seed) and planner");
+  v("time_limit", o.time_limit, "simulated seconds, > 0");
+  v("coverage_goal", o.coverage_goal, "stop at this share of the reachable free area, (0, 1]");
+  v("goal_check_period", o.goal_check_period, "the current goal is re-examined this often [s]");
+  v("stuck_time", o.stuck_time, "no progress this long blacklists the goal [s]");
+  v("max_goal_attempts", o.max_goal_attempts, "candidates tried per selection before trapped");
+  v("metrics_period", o.metrics_period, "coverage is sampled this often [s]");
+  v("frame_period", o.frame_period, "animation frame every [s]; 0 = no animation");
+  v("initial_turn", o.initial_turn, "turn in place at the start [rad]");
+  v("free_threshold", o.free_threshold, "a map cell below this occupancy is explored, (0, 0.5)");
+  v("safety_margin", o.safety_margin, "planning clearance beyond the robot radius [m]");
+  v("stop_distance", o.stop_distance, "reactive stop for laser points this close ahead [m]");
+  v.section("robot");
+  v("radius", o.robot.radius, "disc radius [m], > 0");
+  v("max_speed", o.robot.max_speed, "[m/s], > 0");
+  v("max_turn_rate", o.robot.max_turn_rate, "[rad/s], > 0");
+  v.section("laser");
+  v("fov", o.laser.fov, "field of view [rad], (0, 2 pi]");
+  v("angular_resolution", o.laser.angular_resolution, "beam spacing [rad], > 0");
+  v("max_range", o.laser.max_range, "[m], > 0; also the SLAM likelihood's max_range");
+  v("range_sigma", o.laser.range_sigma, "Gaussian range noise [m], >= 0");
+  v("rate_hz", o.laser.rate_hz, "scans per second, > 0 (the simulator's clock)");
+  v.section("odometry");
+  v("srr", o.odometry.srr, "simulated drift: translation per metre [m/m]");
+  v("srt", o.odometry.srt, "rotation per metre [rad/m]");
+  v("str", o.odometry.str, "translation per radian [m/rad]");
+  v("stt", o.odometry.stt, "rotation per radian [rad/rad]");
+}
+
+template <typename V>
+void visit_planning_sections(MissionOptions& o, V&& v) {
+  v.section("planner");
+  v("algorithm", o.planner.algorithm, "rrt_star | prm_star | informed_rrt_star");
+  v("time_budget", o.planner.time_budget, "wall-clock budget of one search [s], (0, 60]");
+  v("max_samples", o.planner.max_samples, "samples per search, 0 = no limit");
+  v("goal_tolerance", o.planner.goal_tolerance, "a path may end this close to the goal [m]");
+  v("simplify", o.planner.simplify, "shortcut and smooth the found path");
+  v("unknown_is_free", o.planner.costmap.unknown_is_free, "plan through never-observed cells");
+  v("occupied_threshold", o.planner.costmap.occupied_threshold, "occupancy that blocks a cell, (0.5, 1]");
+  v.section("follower");
+  v("lookahead", o.follower.lookahead, "pure-pursuit look-ahead arc length [m]");
+  v("rotate_in_place_angle", o.follower.rotate_in_place_angle, "heading error that stops forward motion [rad]");
+  v("goal_tolerance", o.follower.goal_tolerance, "goal reached within [m]");
+  v.section("frontiers");
+  v("min_cluster_cells", o.frontiers.min_cluster_cells, "smaller frontier clusters are noise");
+  v("goal_search_radius", o.frontiers.goal_search_radius, "a goal may move this far from its cluster [m]");
+  v.section("blacklist");
+  v("radius", o.blacklist.radius, "goals this close to a failed one are skipped [m]");
+  v("lifetime", o.blacklist.lifetime, "mission seconds an entry lasts");
+}
+
+template <typename V>
+void visit_sections(MissionOptions& o, V&& v) {
+  visit_robot_sections(o, v);
+  visit_planning_sections(o, v);
+}
+
+std::optional<planner::PlannerAlgorithm> algorithm_from_name(const std::string& name) {
+  for (const auto a : {planner::PlannerAlgorithm::kRrtStar, planner::PlannerAlgorithm::kPrmStar,
+                       planner::PlannerAlgorithm::kInformedRrtStar}) {
+    if (name == planner::to_string(a)) return a;
+  }
+  return std::nullopt;
+}
+
+[[noreturn]] void fail(const std::string& source, const YAML::Node& n, const std::string& key,
+                       const std::string& why) {
+  throw slam::ParseError(source, static_cast<std::size_t>(n.Mark().line + 1), key,
+                         n.IsScalar() ? n.Scalar() : "", why);
+}
+
+class Loader {
+ public:
+  Loader(const YAML::Node& root, std::string source) : root_(root), source_(std::move(source)) {}
+  void section(const char* name) {
+    // reset(), not operator=: assigning to a yaml-cpp Node writes through to the node.
+    current_.reset(root_[name]);
+    name_ = name;
+    if (current_ && !current_.IsMap()) fail(source_, current_, name, "must be a map");
+  }
+  template <typename T>
+  void operator()(const char* key, T& field, const char*) {
+    const YAML::Node n = node(key);
+    if (!n) return;
+    try {
+      field = n.as<T>();
+    } catch (const YAML::Exception&) {
+      fail(source_, n, name_ + "." + key, "bad value");
+    }
+  }
+  void operator()(const char* key, PoseSource& field, const char*) {
+    const YAML::Node n = node(key);
+    if (!n) return;
+    const auto v = pose_source_from_name(n.IsScalar() ? n.Scalar() : "");
+    if (!v) fail(source_, n, name_ + "." + key, "bad value: expected slam | truth");
+    field = *v;
+  }
+  void operator()(const char* key, planner::PlannerAlgorithm& field, const char*) {
+    const YAML::Node n = node(key);
+    if (!n) return;
+    const auto v = algorithm_from_name(n.IsScalar() ? n.Scalar() : "");
+    if (!v) fail(source_, n, name_ + "." + key, "bad value: expected rrt_star | prm_star | informed_rrt_star");
+    field = *v;
+  }
+  void reject_unknown() const {
+    for (const auto& s : root_) {
+      const std::string sec = s.first.as<std::string>();
+      if (sec == "slam") continue;  // read by the SLAM library's own loader
+      if (!seen_sections_.count(sec)) fail(source_, s.first, sec, "unknown section");
+      for (const auto& k : s.second) {
+        const std::string key = sec + "." + k.first.as<std::string>();
+        if (!seen_keys_.count(key)) fail(source_, k.first, key, "unknown key");
+      }
+    }
+  }
+
+ private:
+  YAML::Node node(const char* key) {
+    seen_sections_.insert(name_);
+    if (!current_) return YAML::Node(YAML::NodeType::Undefined);  // Node() would be a null value
+    const YAML::Node n = current_[key];
+    if (n) seen_keys_.insert(name_ + "." + key);
+    return n;
+  }
+  YAML::Node root_, current_;
+  std::string source_, name_;
+  std::set<std::string> seen_sections_, seen_keys_;
+};
+
+class Dumper {
+ public:
+  void section(const char* name) { out_ << name << ":\n"; }
+  template <typename T>
+  void operator()(const char* key, const T& field, const char* doc) {
+    // fmt prints the shortest text that reads back to the same value.
+    line(key, fmt::format("{}", field), doc);
+  }
+  void operator()(const char* key, PoseSource field, const char* doc) { line(key, pose_source_name(field), doc); }
+  void operator()(const char* key, planner::PlannerAlgorithm field, const char* doc) {
+    line(key, planner::to_string(field), doc);
+  }
+  std::string str() const { return out_.str(); }
+
+ private:
+  void line(const char* key, const std::string& value, const char* doc) {
+    out_ << "  " << key << ": " << value << "  # " << doc << "\n";
+  }
+  std::ostringstream out_;
+};
+
+// The slam section goes to the SLAM library's loader as text of its own, padded so that its
+// errors carry this file's line numbers.
+slam::RbpfOptions parse_slam_section(const std::string& text, const YAML::Node& node,
+                                     const std::string& source, const slam::RbpfOptions& base) {
+  if (!node.IsMap()) fail(source, node, "slam", "must be a map");
+  const int line = node.Mark().line, column = node.Mark().column;
+  if (node.size() == 0) return base;
+  if (node.Style() != YAML::EmitterStyle::Flow) {
+    return slam::parse_rbpf_options(yaml_block_text(text, line, column), source, base);
+  }
+  YAML::Emitter flow;  // a flow map may span lines; re-emitted on one, errors name its first
+  flow << YAML::Flow << node;
+  return slam::parse_rbpf_options(std::string(static_cast<std::size_t>(line), '\n') + flow.c_str(),
+                                  source, base);
+}
+
+}  // namespace
+
+const char* pose_source_name(PoseSource source) { return source == PoseSource::kSlam ? "slam" : "truth"; }
+
+std::optional<PoseSource> pose_source_from_name(const std::string& name) {
+  if (name == "slam") return PoseSource::kSlam;
+  if (name == "truth") return PoseSource::kTruth;
+  return std::nullopt;
+}
+
+std::string yaml_block_text(const std::string& text, int line, int column) {
+  std::istringstream in(text);
+  std::string out(static_cast<std::size_t>(std::max(line, 0)), '\n'), l;
+  const auto col = static_cast<std::size_t>(std::max(column, 0));
+  for (int i = 0; std::getline(in, l); ++i) {
+    if (i < line) continue;
+    const std::size_t first = l.find_first_not_of(' ');
+    const bool blank = first == std::string::npos || l[first] == '#';
+    if (i == line) {
+      out += l.substr(std::min(col, l.size())) + "\n";  // may follow "key:" on the same line
+    } else if (blank) {
+      out += "\n";
+    } else if (first < col) {
+      break;
+    } else {
+      out += l.substr(col) + "\n";
+    }
+  }
+  return out;
+}
+
+MissionOptions parse_mission_options(const std::string& yaml, const std::string& source,
+                                     const MissionOptions& base) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::ParserException& e) {
+    throw slam::ParseError(source, static_cast<std::size_t>(e.mark.line + 1), "", "", e.msg);
+  }
+  MissionOptions o = base;
+  if (root.IsNull()) return o;
+  if (!root.IsMap()) throw slam::ParseError(source, 1, "", "", "top level must be a map of sections");
+  Loader loader(root, source);
+  visit_sections(o, loader);
+  loader.reject_unknown();
+  if (const YAML::Node s = root["slam"]) o.slam = parse_slam_section(yaml, s, source, o.slam);
+  o.harmonize();
+  try {
+    o.validate();
+  } catch (const std::invalid_argument& e) {
+    throw slam::ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+  }
+  return o;
+}
+
+MissionOptions load_mission_options(const std::string& path, const MissionOptions& base) {
+  std::ifstream in(path);
+  if (!in) throw slam::ParseError(path, 0, "", "", "cannot open file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_mission_options(text.str(), path, base);
+}
+
+std::string dump_mission_options(const MissionOptions& options) {
+  MissionOptions copy = options;
+  Dumper d;
+  visit_sections(copy, d);
+  std::string slam_text = slam::dump_rbpf_options(options.slam), indented;
+  std::istringstream in(slam_text);
+  for (std::string l; std::getline(in, l);) indented += "  " + l + "\n";
+  return "# lookahead mission options (config/mission format: every key, with its unit)\n" + d.str() +
+         "# RBPF options in the config/slam format. Derived, whatever is written here:\n"
+         "# filter.seed from mission.seed, likelihood.max_range from laser.max_range.\n"
+         "slam:\n" + indented;
+}
+
+}  // namespace lookahead::exploration
