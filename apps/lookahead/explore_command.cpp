@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <filesystem>
 
@@ -21,13 +22,14 @@ namespace {
 
 struct ExploreArgs {
   exploration::WorldSpec world;
-  std::string strategy = "nearest";
+  // Unset options keep MissionOptions::defaults(): the one place defaults live.
+  std::optional<std::string> strategy;
   std::string pose = "slam";
   std::uint64_t seed = 1;
   std::string out = "out/explore";
-  int particles = 30;
-  double time_limit = 3600.0;
-  double coverage_goal = 0.99;
+  std::optional<int> particles;
+  std::optional<double> time_limit;
+  std::optional<double> coverage_goal;
   std::vector<double> start;
   bool animation = true;
   bool log = false;
@@ -39,11 +41,11 @@ struct ExploreArgs {
 
 exploration::MissionOptions mission_options(const ExploreArgs& a) {
   exploration::MissionOptions o = exploration::MissionOptions::defaults();
-  o.strategy = a.strategy;
+  if (a.strategy) o.strategy = *a.strategy;
   o.seed = a.seed;
-  o.slam.particles = a.particles;
-  o.time_limit = a.time_limit;
-  o.coverage_goal = a.coverage_goal;
+  if (a.particles) o.slam.particles = *a.particles;
+  if (a.time_limit) o.time_limit = *a.time_limit;
+  if (a.coverage_goal) o.coverage_goal = *a.coverage_goal;
   if (a.laser_range > 0) o.laser.max_range = a.laser_range;
   if (a.laser_fov_deg > 0) o.laser.fov = a.laser_fov_deg * M_PI / 180.0;
   o.slam.threads = a.threads;
@@ -62,7 +64,7 @@ int run_explore(ExploreArgs a) {
   const exploration::GeneratedWorld world = exploration::load_world(a.world, options.robot.radius);
   spdlog::info("world {}: {:.1f} m x {:.1f} m, start ({:.2f}, {:.2f}); strategy {}, pose {}, seed {}",
                a.world.name, world.world.width_m(), world.world.height_m(), world.start.x, world.start.y,
-               a.strategy, a.pose, a.seed);
+               options.strategy, a.pose, a.seed);
   std::filesystem::create_directories(a.out);
   exploration::Mission mission(world.world, world.start, options);
   if (a.log) mission.record_log(a.out + "/run.log");
@@ -103,12 +105,12 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--robot-radius", a->robot_radius, "robot disc radius [m] (default 0.25, a Pioneer 3-DX)");
   app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores")->capture_default_str();
   app.add_option("--start", a->start, "start pose x y theta (default: the world's)")->expected(3);
-  app.add_option("--strategy", a->strategy, "nearest | utility")->capture_default_str();
+  app.add_option("--strategy", a->strategy, "nearest | utility (default nearest)");
   app.add_option("--pose", a->pose, "slam (RBPF in the loop) | truth (planner-only)")->capture_default_str();
   app.add_option("--seed", a->seed, "seed of the world, sensor, odometry, SLAM and planner")->capture_default_str();
-  app.add_option("--particles", a->particles, "RBPF particles")->capture_default_str();
-  app.add_option("--time-limit", a->time_limit, "simulated seconds")->capture_default_str();
-  app.add_option("--coverage-goal", a->coverage_goal, "stop at this share of the reachable area")->capture_default_str();
+  app.add_option("--particles", a->particles, "RBPF particles (default 30)");
+  app.add_option("--time-limit", a->time_limit, "simulated seconds (default 1800)");
+  app.add_option("--coverage-goal", a->coverage_goal, "stop at this share of the reachable area (default 0.95)");
   app.add_option("--out", a->out, "output folder")->capture_default_str();
   app.add_flag("!--no-animation", a->animation, "skip animation.mp4");
   app.add_flag("--log", a->log, "also write the run as a CARMEN log (run.log)");

@@ -27,8 +27,8 @@ struct MissionOptions {
   double utility_lambda = 1.0;       ///< utility = gain [m^2] - lambda * cost [m]
   PoseSource pose_source = PoseSource::kSlam;
   std::uint64_t seed = 1;            ///< seeds the sensor, odometry, SLAM and planner
-  double time_limit = 3600.0;        ///< simulated seconds, > 0
-  double coverage_goal = 0.99;       ///< stop at this share of the reachable free area, (0, 1]
+  double time_limit = 1800.0;        ///< simulated seconds, > 0
+  double coverage_goal = 0.95;       ///< stop at this share of the reachable free area, (0, 1]
   double goal_check_period = 1.0;    ///< how often the current goal is re-examined [s]
   double stuck_time = 30.0;          ///< no progress this long: blacklist the goal [s]
   int max_goal_attempts = 5;         ///< candidates tried per selection before "trapped"
