@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <unistd.h>
 
 namespace {
 
@@ -19,7 +20,10 @@ struct Result {
 };
 
 Result shell(const std::string& cmd) {
-  const fs::path out = fs::temp_directory_path() / ("lookahead-cli-" + std::to_string(std::rand()) + ".txt");
+  // pid + counter: ctest runs tests of this file in parallel processes, whose rand() agree.
+  static int counter = 0;
+  const fs::path out = fs::temp_directory_path() /
+                       ("lookahead-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".txt");
   const int status = std::system((cmd + " > " + out.string() + " 2>&1").c_str());
   std::ifstream in(out);
   std::stringstream text;
