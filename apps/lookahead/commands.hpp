@@ -14,5 +14,6 @@ Run add_slam_command(CLI::App& app);
 Run add_eval_command(CLI::App& app);
 Run add_config_command(CLI::App& app);
 Run add_explore_command(CLI::App& app);
+Run add_study_command(CLI::App& app);
 
 }  // namespace lookahead::app

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "lookahead/exploration/mission_config.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
 
 namespace lookahead::app {
@@ -10,8 +11,14 @@ namespace lookahead::app {
 Run add_config_command(CLI::App& app) {
   auto check = std::make_shared<std::string>();
   app.add_flag("--dump", "print the default SLAM configuration (YAML)");
+  auto mission = std::make_shared<bool>(false);
+  app.add_flag("--dump-mission", *mission, "print the default mission configuration (YAML)");
   app.add_option("--check", *check, "load a YAML config and report the first error");
-  return [check] {
+  return [check, mission] {
+    if (*mission) {
+      fmt::print("{}", exploration::dump_mission_options(exploration::MissionOptions::defaults()));
+      return 0;
+    }
     if (!check->empty()) {
       slam::load_rbpf_options(*check);
       fmt::print("{}: ok\n", *check);

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "lookahead/exploration/animation_writer.hpp"
 #include "lookahead/exploration/mission.hpp"
+#include "lookahead/exploration/mission_config.hpp"
 #include "lookahead/exploration/mission_picture.hpp"
 #include "lookahead/exploration/mission_report.hpp"
 #include "lookahead/exploration/world_source.hpp"
@@ -24,7 +25,8 @@ struct ExploreArgs {
   exploration::WorldSpec world;
   // Unset options keep MissionOptions::defaults(): the one place defaults live.
   std::optional<std::string> strategy;
-  std::string pose = "slam";
+  std::string config;  ///< mission YAML (config/mission/default.yaml documents every key)
+  std::optional<std::string> pose;
   std::uint64_t seed = 1;
   std::string out = "out/explore";
   std::optional<int> particles;
@@ -40,7 +42,8 @@ struct ExploreArgs {
 };
 
 exploration::MissionOptions mission_options(const ExploreArgs& a) {
-  exploration::MissionOptions o = exploration::MissionOptions::defaults();
+  exploration::MissionOptions o = a.config.empty() ? exploration::MissionOptions::defaults()
+                                                  : exploration::load_mission_options(a.config);
   if (a.strategy) o.strategy = *a.strategy;
   o.seed = a.seed;
   if (a.particles) o.slam.particles = *a.particles;
@@ -50,8 +53,9 @@ exploration::MissionOptions mission_options(const ExploreArgs& a) {
   if (a.laser_fov_deg > 0) o.laser.fov = a.laser_fov_deg * M_PI / 180.0;
   o.slam.threads = a.threads;
   if (a.robot_radius > 0) o.robot.radius = a.robot_radius;
-  if (a.pose == "truth") o.pose_source = exploration::PoseSource::kTruth;
-  else if (a.pose != "slam") throw std::invalid_argument("--pose must be slam or truth, not '" + a.pose + "'");
+  if (a.pose == std::string("truth")) o.pose_source = exploration::PoseSource::kTruth;
+  else if (a.pose == std::string("slam")) o.pose_source = exploration::PoseSource::kSlam;
+  else if (a.pose) throw std::invalid_argument("--pose must be slam or truth, not '" + *a.pose + "'");
   o.harmonize();
   return o;
 }
@@ -64,7 +68,7 @@ int run_explore(ExploreArgs a) {
   const exploration::GeneratedWorld world = exploration::load_world(a.world, options.robot.radius);
   spdlog::info("world {}: {:.1f} m x {:.1f} m, start ({:.2f}, {:.2f}); strategy {}, pose {}, seed {}",
                a.world.name, world.world.width_m(), world.world.height_m(), world.start.x, world.start.y,
-               options.strategy, a.pose, a.seed);
+               options.strategy, exploration::pose_source_name(options.pose_source), a.seed);
   std::filesystem::create_directories(a.out);
   exploration::Mission mission(world.world, world.start, options);
   if (a.log) mission.record_log(a.out + "/run.log");
@@ -97,6 +101,7 @@ int run_explore(ExploreArgs a) {
 
 Run add_explore_command(CLI::App& app) {
   auto a = std::make_shared<ExploreArgs>();
+  app.add_option("--config", a->config, "mission options YAML (see config/mission/default.yaml)");
   app.add_option("--world", a->world.name, "office | maze | map .yaml | Stage .world | image")->capture_default_str();
   app.add_option("--resolution", a->world.image_resolution, "m/pixel of a plain image world")->capture_default_str();
   app.add_option("--pixel-rule", a->world.pixel_rule, "stage | only_white (plain images)")->capture_default_str();
@@ -106,7 +111,7 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores")->capture_default_str();
   app.add_option("--start", a->start, "start pose x y theta (default: the world's)")->expected(3);
   app.add_option("--strategy", a->strategy, "nearest | utility (default nearest)");
-  app.add_option("--pose", a->pose, "slam (RBPF in the loop) | truth (planner-only)")->capture_default_str();
+  app.add_option("--pose", a->pose, "slam (RBPF in the loop) | truth (planner-only); default slam");
   app.add_option("--seed", a->seed, "seed of the world, sensor, odometry, SLAM and planner")->capture_default_str();
   app.add_option("--particles", a->particles, "RBPF particles (default 30)");
   app.add_option("--time-limit", a->time_limit, "simulated seconds (default 1800)");

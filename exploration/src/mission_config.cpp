@@ -62,14 +62,17 @@ void visit_planning_sections(MissionOptions& o, V&& v) {
   v("goal_tolerance", o.planner.goal_tolerance, "a path may end this close to the goal [m]");
   v("simplify", o.planner.simplify, "shortcut and smooth the found path");
   v("unknown_is_free", o.planner.costmap.unknown_is_free, "plan through never-observed cells");
-  v("occupied_threshold", o.planner.costmap.occupied_threshold, "occupancy that blocks a cell, (0.5, 1]");
+  v("occupied_threshold", o.planner.costmap.occupied_threshold,
+    "occupancy that blocks a cell, (0.5, 1]");
   v.section("follower");
   v("lookahead", o.follower.lookahead, "pure-pursuit look-ahead arc length [m]");
-  v("rotate_in_place_angle", o.follower.rotate_in_place_angle, "heading error that stops forward motion [rad]");
+  v("rotate_in_place_angle", o.follower.rotate_in_place_angle,
+    "heading error that stops forward motion [rad]");
   v("goal_tolerance", o.follower.goal_tolerance, "goal reached within [m]");
   v.section("frontiers");
   v("min_cluster_cells", o.frontiers.min_cluster_cells, "smaller frontier clusters are noise");
-  v("goal_search_radius", o.frontiers.goal_search_radius, "a goal may move this far from its cluster [m]");
+  v("goal_search_radius", o.frontiers.goal_search_radius,
+    "a goal may move this far from its cluster [m]");
   v.section("blacklist");
   v("radius", o.blacklist.radius, "goals this close to a failed one are skipped [m]");
   v("lifetime", o.blacklist.lifetime, "mission seconds an entry lasts");
@@ -125,7 +128,9 @@ class Loader {
     const YAML::Node n = node(key);
     if (!n) return;
     const auto v = algorithm_from_name(n.IsScalar() ? n.Scalar() : "");
-    if (!v) fail(source_, n, name_ + "." + key, "bad value: expected rrt_star | prm_star | informed_rrt_star");
+    if (!v)
+      fail(source_, n, name_ + "." + key,
+           "bad value: expected rrt_star | prm_star | informed_rrt_star");
     field = *v;
   }
   void reject_unknown() const {
@@ -161,7 +166,9 @@ class Dumper {
     // fmt prints the shortest text that reads back to the same value.
     line(key, fmt::format("{}", field), doc);
   }
-  void operator()(const char* key, PoseSource field, const char* doc) { line(key, pose_source_name(field), doc); }
+  void operator()(const char* key, PoseSource field, const char* doc) {
+    line(key, pose_source_name(field), doc);
+  }
   void operator()(const char* key, planner::PlannerAlgorithm field, const char* doc) {
     line(key, planner::to_string(field), doc);
   }
@@ -192,7 +199,9 @@ slam::RbpfOptions parse_slam_section(const std::string& text, const YAML::Node& 
 
 }  // namespace
 
-const char* pose_source_name(PoseSource source) { return source == PoseSource::kSlam ? "slam" : "truth"; }
+const char* pose_source_name(PoseSource source) {
+  return source == PoseSource::kSlam ? "slam" : "truth";
+}
 
 std::optional<PoseSource> pose_source_from_name(const std::string& name) {
   if (name == "slam") return PoseSource::kSlam;
@@ -231,7 +240,8 @@ MissionOptions parse_mission_options(const std::string& yaml, const std::string&
   }
   MissionOptions o = base;
   if (root.IsNull()) return o;
-  if (!root.IsMap()) throw slam::ParseError(source, 1, "", "", "top level must be a map of sections");
+  if (!root.IsMap())
+    throw slam::ParseError(source, 1, "", "", "top level must be a map of sections");
   Loader loader(root, source);
   visit_sections(o, loader);
   loader.reject_unknown();
@@ -260,10 +270,12 @@ std::string dump_mission_options(const MissionOptions& options) {
   std::string slam_text = slam::dump_rbpf_options(options.slam), indented;
   std::istringstream in(slam_text);
   for (std::string l; std::getline(in, l);) indented += "  " + l + "\n";
-  return "# lookahead mission options (config/mission format: every key, with its unit)\n" + d.str() +
+  return "# lookahead mission options (config/mission format: every key, with its unit)\n" +
+         d.str() +
          "# RBPF options in the config/slam format. Derived, whatever is written here:\n"
          "# filter.seed from mission.seed, likelihood.max_range from laser.max_range.\n"
-         "slam:\n" + indented;
+         "slam:\n" +
+         indented;
 }
 
 }  // namespace lookahead::exploration

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 // An exploration-time study (`lookahead study STUDY.yaml`): every world x strategy x seed of
 // a StudySpec as one mission, on all cores, resumable. Run r writes OUT/runs/<r>/ (map,
-// pictures, trajectory, run.json via write_mission_outputs, plus coverage.csv and the
-// options.yaml it ran with). The folder is filled under <r>.partial and renamed when the run
-// is complete, so run.json appears atomically: a run is finished iff its run.json parses
-// and its options.yaml says what this study would run now. An interrupted study therefore
-// resumes where it stopped, and a changed option redoes exactly the runs it affects.
+// pictures, trajectory, run.json via write_mission_outputs, plus coverage.csv and
+// run_config.yaml, the world and options it ran with). The folder is filled under
+// <r>.partial and renamed when the run is complete, so run.json appears atomically: a run is
+// finished iff its run.json parses and its run_config.yaml says what this study would run
+// now. An interrupted study therefore resumes where it stopped, and a changed world or
+// option redoes exactly the runs it affects.
 #pragma once
 
 #include <cstdint>
@@ -54,8 +55,12 @@ std::vector<StudyRun> plan_runs(const StudySpec& spec);
 std::string run_id(const StudySpec& spec, const StudyRun& run);
 /// The options one run uses: the study's, with its strategy and seed, one SLAM thread.
 MissionOptions run_options(const StudySpec& spec, const StudyRun& run);
-/// The finished run in `dir` when it matches `options`; nullopt means "run it".
-std::optional<StudyRunResult> read_finished_run(const std::string& dir, const MissionOptions& options);
+/// What run_config.yaml holds: the world as the study gives it, then every mission option.
+std::string run_config_text(const StudySpec& spec, const StudyRun& run);
+/// The finished run in `dir` when its run_config.yaml equals `config_text`; nullopt means
+/// "run it" (missing, half-written, damaged or made with other inputs).
+std::optional<StudyRunResult> read_finished_run(const std::string& dir,
+                                                const std::string& config_text);
 
 /// Runs what is not finished on `workers` threads (0 = std::thread::hardware_concurrency()),
 /// each mission single-threaded. A run that throws stops the study after the runs in flight

@@ -17,10 +17,10 @@ struct Bar {
 
 struct BarChart {
   std::string title, y_label;
-  std::vector<std::string> groups;         ///< x axis: one label per group
-  std::vector<std::string> series;         ///< legend: one colour each (series_colour)
-  std::vector<std::vector<Bar>> bars;      ///< [group][series]
-  int width = 900, height = 500;           ///< [px]
+  std::vector<std::string> groups;     ///< x axis: one label per group
+  std::vector<std::string> series;     ///< legend: one colour each (series_colour)
+  std::vector<std::vector<Bar>> bars;  ///< [group][series]
+  int width = 900, height = 500;       ///< [px]
 };
 
 /// Throws slam::ParseError when the file cannot be written.

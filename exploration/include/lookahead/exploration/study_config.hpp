@@ -5,7 +5,8 @@
 //   out: out/study/kth_quick         # default out/study/<name>, relative to the working dir
 //   worlds:                          # required, at least one
 //     - {name: office}               # office | maze | a map .yaml, Stage .world or image
-//     - {name: plans/a.png, resolution: 0.2, start: [x, y, theta], label: a, seed: 1}
+//     - {name: plans/a.png, resolution: 0.2, pixel_rule: only_white, start: [x, y, theta],
+//        label: a, seed: 1}          # resolution and pixel_rule (stage | only_white): images
 //   strategies: [nearest, utility]   # required
 //   seeds: [1, 2, 3]                 # or {from: 1, count: 10}
 //   pose_source: truth               # shortcuts for mission.pose_source, slam.filter.particles,
@@ -52,6 +53,7 @@ struct StudySpec {
 
 StudySpec load_study(const std::string& path);
 /// `source` names the text in errors; `base_dir` is where relative world paths start.
-StudySpec parse_study(const std::string& yaml, const std::string& source, const std::string& base_dir);
+StudySpec parse_study(const std::string& yaml, const std::string& source,
+                      const std::string& base_dir);
 
 }  // namespace lookahead::exploration

@@ -27,8 +27,8 @@ void write_study_plots(const std::string& dir, const StudySpec& spec, const Stud
 
 /// Mean coverage of `curves` on `grid` (simulated seconds): each curve is interpolated
 /// linearly and holds its last value after it ends (the mission stopped; its map stays).
-std::vector<double> mean_coverage_curve(const std::vector<const std::vector<CoverageSample>*>& curves,
-                                        const std::vector<double>& grid);
+std::vector<double> mean_coverage_curve(
+    const std::vector<const std::vector<CoverageSample>*>& curves, const std::vector<double>& grid);
 
 /// All of the above into spec.out.
 void write_study_outputs(const StudySpec& spec, const StudyResult& result);

@@ -26,9 +26,9 @@ namespace lookahead::exploration {
 struct WelchResult {
   bool defined = false;  ///< false: `why` says what is missing (too few runs, no variance)
   std::string why;
-  double t = 0.0;        ///< (mean_a - mean_b) / sqrt(s_a^2 / n_a + s_b^2 / n_b)
-  double df = 0.0;       ///< Welch-Satterthwaite degrees of freedom
-  double p = 1.0;        ///< two-sided
+  double t = 0.0;                ///< (mean_a - mean_b) / sqrt(s_a^2 / n_a + s_b^2 / n_b)
+  double df = 0.0;               ///< Welch-Satterthwaite degrees of freedom
+  double p = 1.0;                ///< two-sided
   double mean_difference = 0.0;  ///< mean_a - mean_b
 };
 

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+// The mission YAML loader: round trip, errors that name file:line, key and value, the slam
+// section's line numbers, and the shipped defaults.
+#include "lookahead/exploration/mission_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "lookahead/slam/io/parse_error.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+// Expects a ParseError from `yaml` and returns it for the caller's checks.
+slam::ParseError parse_error(const std::string& yaml) {
+  try {
+    parse_mission_options(yaml, "my.yaml");
+  } catch (const slam::ParseError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << yaml;
+  return slam::ParseError("", 0, "", "", "");
+}
+
+TEST(MissionConfig, DumpReadsBackToTheSameOptions) {
+  MissionOptions o = MissionOptions::defaults();
+  o.strategy = "utility";
+  o.pose_source = PoseSource::kTruth;
+  o.seed = 42;
+  o.robot.radius = 0.2;
+  o.laser.max_range = 6.5;
+  o.planner.algorithm = planner::PlannerAlgorithm::kInformedRrtStar;
+  o.planner.simplify = false;
+  o.planner.max_samples = 1234;
+  o.slam.particles = 12;
+  o.harmonize();
+  const MissionOptions back = parse_mission_options(dump_mission_options(o), "dump");
+  EXPECT_EQ(dump_mission_options(back), dump_mission_options(o));
+  EXPECT_EQ(back.strategy, "utility");
+  EXPECT_EQ(back.pose_source, PoseSource::kTruth);
+  EXPECT_EQ(back.planner.algorithm, planner::PlannerAlgorithm::kInformedRrtStar);
+  EXPECT_EQ(back.slam.particles, 12);
+  EXPECT_EQ(back.slam.seed, 44u);  // derived from mission.seed by harmonize()
+  EXPECT_DOUBLE_EQ(back.slam.likelihood.max_range, 6.5);
+  EXPECT_DOUBLE_EQ(back.planner.costmap.robot_radius, 0.2 + back.safety_margin);
+}
+
+TEST(MissionConfig, LeftOutKeysKeepTheBase) {
+  const MissionOptions o = parse_mission_options("robot:\n  max_speed: 0.4\n", "x");
+  EXPECT_DOUBLE_EQ(o.robot.max_speed, 0.4);
+  EXPECT_DOUBLE_EQ(o.follower.max_linear_speed, 0.4);  // harmonized
+  EXPECT_EQ(o.slam.particles, MissionOptions::defaults().slam.particles);
+  EXPECT_EQ(dump_mission_options(parse_mission_options("", "x")),
+            dump_mission_options(MissionOptions::defaults()));
+}
+
+TEST(MissionConfig, UnknownKeyNamesFileLineAndKey) {
+  const slam::ParseError e =
+      parse_error("mission:\n  seed: 3\nrobot:\n  radius: 0.2\n  raduis: 0.3\n");
+  EXPECT_EQ(e.file(), "my.yaml");
+  EXPECT_EQ(e.line(), 5u);
+  EXPECT_EQ(e.field(), "robot.raduis");
+  EXPECT_EQ(parse_error("\nrobots:\n  radius: 0.2\n").line(), 2u);
+}
+
+TEST(MissionConfig, BadEnumValueNamesTheValue) {
+  slam::ParseError e = parse_error("mission:\n  pose_source: gps\n");
+  EXPECT_EQ(e.line(), 2u);
+  EXPECT_EQ(e.field(), "mission.pose_source");
+  EXPECT_EQ(e.value(), "gps");
+  e = parse_error("planner:\n  time_budget: 0.5\n  algorithm: rrt\n");
+  EXPECT_EQ(e.line(), 3u);
+  EXPECT_EQ(e.field(), "planner.algorithm");
+  EXPECT_EQ(e.value(), "rrt");
+  e = parse_error("laser:\n  max_range: far\n");
+  EXPECT_EQ(e.field(), "laser.max_range");
+  EXPECT_EQ(e.value(), "far");
+}
+
+TEST(MissionConfig, ImpossibleValuesAreParseErrorsNamingTheFile) {
+  EXPECT_EQ(parse_error("mission:\n  strategy: random_walk\n").file(), "my.yaml");
+  EXPECT_EQ(parse_error("mission:\n  coverage_goal: 1.5\n").file(), "my.yaml");
+  EXPECT_EQ(parse_error("robot:\n  radius: -1\n").file(), "my.yaml");
+  EXPECT_EQ(parse_error("[1, 2]\n").line(), 1u);
+  EXPECT_EQ(parse_error("robot: 3\n").field(), "robot");
+}
+
+// The slam body goes to the SLAM loader; its errors keep this file's line numbers.
+TEST(MissionConfig, SlamSectionKeepsLineNumbers) {
+  const MissionOptions o = parse_mission_options(
+      "mission:\n  seed: 5\nslam:\n  filter:\n    particles: 7\n  motion:\n    srr: 0.2\n", "x");
+  EXPECT_EQ(o.slam.particles, 7);
+  EXPECT_DOUBLE_EQ(o.slam.motion.srr, 0.2);
+  const slam::ParseError e = parse_error(
+      "mission:\n  seed: 5\nslam:\n  filter:\n    particles: 7\n\n  # a comment\n    partcles: "
+      "3\nrobot:\n  radius: 0.2\n");
+  EXPECT_EQ(e.line(), 8u);
+  EXPECT_EQ(e.field(), "filter.partcles");
+  EXPECT_EQ(parse_error("slam:\n  filter:\n    particles: many\n").line(), 3u);
+  EXPECT_EQ(parse_mission_options("slam: {filter: {particles: 9}}\n", "x").slam.particles, 9);
+  EXPECT_EQ(parse_error("\nslam: {filter: {particle: 9}}\n").line(), 2u);
+}
+
+TEST(MissionConfig, YamlBlockTextPadsAndDedents) {
+  const std::string text = "a:\n  b:\n    c: 1\n\n    d: 2\n  e: 3\n";
+  EXPECT_EQ(yaml_block_text(text, 2, 4), "\n\nc: 1\n\nd: 2\n");
+}
+
+// config/mission/default.yaml documents the defaults: it must say exactly what the code does.
+TEST(MissionConfig, ShippedDefaultsMatchTheCode) {
+  const std::string path = std::string(LOOKAHEAD_SOURCE_DIR) + "/config/mission/default.yaml";
+  std::ifstream in(path);
+  ASSERT_TRUE(in) << path << " missing";
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), dump_mission_options(MissionOptions::defaults()))
+      << "regenerate config/mission/default.yaml from "
+         "dump_mission_options(MissionOptions::defaults())";
+  EXPECT_NO_THROW(load_mission_options(path));
+}
+
+}  // namespace
+}  // namespace lookahead::exploration
