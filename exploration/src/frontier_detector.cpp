@@ -25,8 +25,19 @@ bool FrontierDetector::is_free(const slam::OccupancyGrid& grid, CellIndex c) con
 bool FrontierDetector::is_frontier(const slam::OccupancyGrid& grid, CellIndex c) const {
   if (!is_free(grid, c)) return false;
   // 4-neighbourhood: a diagonal unknown cell alone is a gap between beams, not a way out.
-  return !grid.is_known({c.x + 1, c.y}) || !grid.is_known({c.x - 1, c.y}) ||
-         !grid.is_known({c.x, c.y + 1}) || !grid.is_known({c.x, c.y - 1});
+  const bool borders_unknown = !grid.is_known({c.x + 1, c.y}) || !grid.is_known({c.x - 1, c.y}) ||
+                               !grid.is_known({c.x, c.y + 1}) || !grid.is_known({c.x, c.y - 1});
+  if (!borders_unknown) return false;
+  // A free cell that touches a wall and unknown space is the unseen inside of that wall
+  // (beams graze a wall and leave gaps between its hits), not a way into new space: going
+  // there can never clear it.
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const CellIndex n{c.x + dx, c.y + dy};
+      if (grid.is_known(n) && grid.probability(n) >= options_.occupied_threshold) return false;
+    }
+  }
+  return true;
 }
 
 void FrontierDetector::update(const slam::OccupancyGrid& grid, CellIndex min, CellIndex max) {
