@@ -13,7 +13,8 @@ using slam::CellIndex;
 FrontierDetector::FrontierDetector(const FrontierOptions& options) : options_(options) {
   if (!(options.free_threshold > 0 && options.free_threshold < 0.5) ||
       !(options.occupied_threshold > 0.5 && options.occupied_threshold < 1) ||
-      options.min_cluster_cells < 1 || options.robot_radius < 0 || options.goal_search_radius < 0) {
+      options.min_cluster_cells < 1 || options.robot_radius < 0 || options.goal_search_radius < 0 ||
+      options.cluster_gap < 1 || options.cluster_gap > 5) {
     throw std::invalid_argument("frontier options out of range");
   }
 }
@@ -115,8 +116,9 @@ std::vector<FrontierCluster> FrontierDetector::clusters(const slam::OccupancyGri
       const CellIndex c = queue.front();
       queue.pop_front();
       cluster.cells.push_back(c);
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
+      const int g = options_.cluster_gap;
+      for (int dy = -g; dy <= g; ++dy) {
+        for (int dx = -g; dx <= g; ++dx) {
           const CellIndex n{c.x + dx, c.y + dy};
           if (cells_.count(n) && visited.insert(n).second) queue.push_back(n);
         }

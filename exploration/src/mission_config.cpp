@@ -71,6 +71,7 @@ void visit_planning_sections(MissionOptions& o, V&& v) {
   v("goal_tolerance", o.follower.goal_tolerance, "goal reached within [m]");
   v.section("frontiers");
   v("min_cluster_cells", o.frontiers.min_cluster_cells, "smaller frontier clusters are noise");
+  v("cluster_gap", o.frontiers.cluster_gap, "frontier cells this many cells apart join one cluster");
   v("goal_search_radius", o.frontiers.goal_search_radius,
     "a goal may move this far from its cluster [m]");
   v.section("blacklist");

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/world_source.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <stdexcept>
 
 #include "lookahead/exploration/robot.hpp"
@@ -41,19 +43,29 @@ slam::Pose2 default_start(const World& world, double clearance) {
       }
   if (n == 0) throw std::invalid_argument(world.source() + ": the world has no free space");
   mx /= n; my /= n;
-  std::optional<slam::Pose2> best;
-  double best_d = INFINITY;
+  std::vector<std::pair<double, slam::Pose2>> spots;
   for (double y = world.origin().y(); y < world.origin().y() + world.height_m(); y += 0.25) {
     for (double x = world.origin().x(); x < world.origin().x() + world.width_m(); x += 0.25) {
-      const double d = std::hypot(x - mx, y - my);
-      if (d < best_d && !disc_collides(world, {x, y}, clearance)) {
-        best_d = d;
-        best = slam::Pose2{x, y, 0.0};
-      }
+      if (!disc_collides(world, {x, y}, clearance)) spots.push_back({std::hypot(x - mx, y - my), {x, y, 0.0}});
     }
   }
-  if (!best) throw std::invalid_argument(world.source() + ": no free spot with the clearance for a start");
-  return *best;
+  if (spots.empty()) throw std::invalid_argument(world.source() + ": no free spot with the clearance for a start");
+  std::sort(spots.begin(), spots.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  // The middle may fall in a closet: take the first spot (nearest the middle) whose region
+  // holds at least half of the free area, else the spot with the largest region seen.
+  const double free_area = world.free_area_m2();
+  slam::Pose2 best = spots.front().second;
+  double best_area = -1.0;
+  for (std::size_t i = 0; i < spots.size() && i < 40; i += (i < 10 ? 1 : 3)) {
+    const slam::Pose2& p = spots[i].second;
+    const double area = reachable_free_area(world, {p.x, p.y}, clearance / 2).area_m2;
+    if (area > best_area) {
+      best_area = area;
+      best = p;
+    }
+    if (area >= 0.5 * free_area) break;
+  }
+  return best;
 }
 
 GeneratedWorld load_world(const WorldSpec& spec, double robot_radius) {

@@ -17,6 +17,9 @@ struct FrontierOptions {
   double free_threshold = 0.35;     ///< a known cell below this occupancy is free, (0, 0.5)
   double occupied_threshold = 0.65; ///< at or above this it is an obstacle, (0.5, 1)
   int min_cluster_cells = 6;        ///< smaller clusters are noise (a gap between beams)
+  /// Frontier cells this many cells apart still join one cluster, 1..5: far from the sensor
+  /// the beams of a scan leave gaps in a frontier arc, which would split it into specks.
+  int cluster_gap = 2;
   double robot_radius = 0.25;       ///< a goal needs this clearance from obstacles [m]
   double goal_search_radius = 1.0;  ///< how far from its cluster a goal may be moved [m]
 };
@@ -47,7 +50,8 @@ class FrontierDetector {
   void rebuild(const slam::OccupancyGrid& grid);
 
   [[nodiscard]] const std::unordered_set<slam::CellIndex, CellHash>& cells() const { return cells_; }
-  /// 8-connected clusters of at least min_cluster_cells, each with a goal if one exists.
+  /// Clusters (cells within cluster_gap of each other) of at least min_cluster_cells, each
+  /// with a goal if one exists.
   [[nodiscard]] std::vector<FrontierCluster> clusters(const slam::OccupancyGrid& grid) const;
 
   [[nodiscard]] bool is_free(const slam::OccupancyGrid& grid, slam::CellIndex c) const;
