@@ -19,7 +19,7 @@ struct FrontierOptions {
   int min_cluster_cells = 6;        ///< smaller clusters are noise (a gap between beams)
   /// Frontier cells this many cells apart still join one cluster, 1..5: far from the sensor
   /// the beams of a scan leave gaps in a frontier arc, which would split it into specks.
-  int cluster_gap = 2;
+  int cluster_gap = 1;
   double robot_radius = 0.25;       ///< a goal needs this clearance from obstacles [m]
   double goal_search_radius = 1.0;  ///< how far from its cluster a goal may be moved [m]
 };
