@@ -4,12 +4,11 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/slam/config/yaml_sections.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::exploration {
@@ -93,100 +92,45 @@ std::optional<planner::PlannerAlgorithm> algorithm_from_name(const std::string& 
   return std::nullopt;
 }
 
-[[noreturn]] void fail(const std::string& source, const YAML::Node& n, const std::string& key,
-                       const std::string& why) {
-  throw slam::ParseError(source, static_cast<std::size_t>(n.Mark().line + 1), key,
-                         n.IsScalar() ? n.Scalar() : "", why);
-}
+using slam::config::fail_at;
 
-class Loader {
+// The shared section loader and dumper, plus this library's two enums.
+class Loader : public slam::config::SectionLoader {
  public:
-  Loader(const YAML::Node& root, std::string source) : root_(root), source_(std::move(source)) {}
-  void section(const char* name) {
-    // reset(), not operator=: assigning to a yaml-cpp Node writes through to the node.
-    current_.reset(root_[name]);
-    name_ = name;
-    if (current_ && !current_.IsMap()) fail(source_, current_, name, "must be a map");
-  }
-  template <typename T>
-  void operator()(const char* key, T& field, const char*) {
-    const YAML::Node n = node(key);
-    if (!n) return;
-    try {
-      field = n.as<T>();
-    } catch (const YAML::Exception&) {
-      fail(source_, n, name_ + "." + key, "bad value");
-    }
-  }
+  using SectionLoader::SectionLoader;
+  using SectionLoader::operator();
   void operator()(const char* key, PoseSource& field, const char*) {
     const YAML::Node n = node(key);
     if (!n) return;
     const auto v = pose_source_from_name(n.IsScalar() ? n.Scalar() : "");
-    if (!v) fail(source_, n, name_ + "." + key, "bad value: expected slam | truth");
+    if (!v) fail_at(source(), n, section_name() + "." + key, "bad value: expected slam | truth");
     field = *v;
   }
   void operator()(const char* key, planner::PlannerAlgorithm& field, const char*) {
     const YAML::Node n = node(key);
     if (!n) return;
     const auto v = algorithm_from_name(n.IsScalar() ? n.Scalar() : "");
-    if (!v)
-      fail(source_, n, name_ + "." + key,
-           "bad value: expected rrt_star | prm_star | informed_rrt_star");
+    if (!v) {
+      fail_at(source(), n, section_name() + "." + key, "bad value: expected rrt_star | prm_star | informed_rrt_star");
+    }
     field = *v;
   }
-  void reject_unknown() const {
-    for (const auto& s : root_) {
-      const std::string sec = s.first.as<std::string>();
-      if (sec == "slam") continue;  // read by the SLAM library's own loader
-      if (!seen_sections_.count(sec)) fail(source_, s.first, sec, "unknown section");
-      for (const auto& k : s.second) {
-        const std::string key = sec + "." + k.first.as<std::string>();
-        if (!seen_keys_.count(key)) fail(source_, k.first, key, "unknown key");
-      }
-    }
-  }
-
- private:
-  YAML::Node node(const char* key) {
-    seen_sections_.insert(name_);
-    if (!current_) return YAML::Node(YAML::NodeType::Undefined);  // Node() would be a null value
-    const YAML::Node n = current_[key];
-    if (n) seen_keys_.insert(name_ + "." + key);
-    return n;
-  }
-  YAML::Node root_, current_;
-  std::string source_, name_;
-  std::set<std::string> seen_sections_, seen_keys_;
 };
 
-class Dumper {
+class Dumper : public slam::config::SectionDumper {
  public:
-  void section(const char* name) { out_ << name << ":\n"; }
-  template <typename T>
-  void operator()(const char* key, const T& field, const char* doc) {
-    // fmt prints the shortest text that reads back to the same value.
-    line(key, fmt::format("{}", field), doc);
-  }
-  void operator()(const char* key, PoseSource field, const char* doc) {
-    line(key, pose_source_name(field), doc);
-  }
+  using SectionDumper::operator();
+  void operator()(const char* key, PoseSource field, const char* doc) { line(key, pose_source_name(field), doc); }
   void operator()(const char* key, planner::PlannerAlgorithm field, const char* doc) {
     line(key, planner::to_string(field), doc);
   }
-  std::string str() const { return out_.str(); }
-
- private:
-  void line(const char* key, const std::string& value, const char* doc) {
-    out_ << "  " << key << ": " << value << "  # " << doc << "\n";
-  }
-  std::ostringstream out_;
 };
 
 // The slam section goes to the SLAM library's loader as text of its own, padded so that its
 // errors carry this file's line numbers.
 slam::RbpfOptions parse_slam_section(const std::string& text, const YAML::Node& node,
                                      const std::string& source, const slam::RbpfOptions& base) {
-  if (!node.IsMap()) fail(source, node, "slam", "must be a map");
+  if (!node.IsMap()) fail_at(source, node, "slam", "must be a map");
   const int line = node.Mark().line, column = node.Mark().column;
   if (node.size() == 0) return base;
   if (node.Style() != YAML::EmitterStyle::Flow) {
@@ -233,19 +177,12 @@ std::string yaml_block_text(const std::string& text, int line, int column) {
 
 MissionOptions parse_mission_options(const std::string& yaml, const std::string& source,
                                      const MissionOptions& base) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::ParserException& e) {
-    throw slam::ParseError(source, static_cast<std::size_t>(e.mark.line + 1), "", "", e.msg);
-  }
+  const YAML::Node root = slam::config::parse_sections(yaml, source);
   MissionOptions o = base;
   if (root.IsNull()) return o;
-  if (!root.IsMap())
-    throw slam::ParseError(source, 1, "", "", "top level must be a map of sections");
   Loader loader(root, source);
   visit_sections(o, loader);
-  loader.reject_unknown();
+  loader.reject_unknown({"slam"});  // read by the SLAM library's own loader below
   if (const YAML::Node s = root["slam"]) o.slam = parse_slam_section(yaml, s, source, o.slam);
   o.harmonize();
   try {
@@ -257,11 +194,7 @@ MissionOptions parse_mission_options(const std::string& yaml, const std::string&
 }
 
 MissionOptions load_mission_options(const std::string& path, const MissionOptions& base) {
-  std::ifstream in(path);
-  if (!in) throw slam::ParseError(path, 0, "", "", "cannot open file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_mission_options(text.str(), path, base);
+  return parse_mission_options(slam::config::read_text_file(path), path, base);
 }
 
 std::string dump_mission_options(const MissionOptions& options) {

@@ -1,13 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/config/slam_config.hpp"
 
-#include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
+#include <stdexcept>
+#include <string>
 
-#include <fstream>
-#include <set>
-#include <sstream>
-
+#include "lookahead/slam/config/yaml_sections.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 #include "lookahead/slam/rbpf/rbpf.hpp"
 
@@ -65,78 +62,14 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v("min_sigma_fraction", o.proposal.min_sigma_fraction, "floor of the fitted std, fraction of spacing");
 }
 
-class Loader {
- public:
-  Loader(const YAML::Node& root, std::string source) : root_(root), source_(std::move(source)) {}
-  void section(const char* name) {
-    // reset(), not operator=: assigning to a yaml-cpp Node writes through to the node it
-    // refers to (the previous section) instead of rebinding.
-    current_.reset(root_[name]);
-    name_ = name;
-    if (current_ && !current_.IsMap()) fail(current_, name, "must be a map");
-    if (current_) seen_sections_.insert(name);
-  }
-  template <typename T>
-  void operator()(const char* key, T& field, const char*) {
-    if (!current_) return;
-    const YAML::Node n = current_[key];
-    if (!n) return;
-    seen_keys_.insert(name_ + "." + key);
-    try {
-      field = n.as<T>();
-    } catch (const YAML::Exception&) {
-      fail(n, name_ + "." + key, "bad value");
-    }
-  }
-  void reject_unknown() const {
-    for (const auto& s : root_) {
-      const std::string sec = s.first.as<std::string>();
-      if (!seen_sections_.count(sec)) fail(s.first, sec, "unknown section");
-      for (const auto& k : s.second) {
-        const std::string key = sec + "." + k.first.as<std::string>();
-        if (!seen_keys_.count(key)) fail(k.first, key, "unknown key");
-      }
-    }
-  }
-
- private:
-  [[noreturn]] void fail(const YAML::Node& n, const std::string& key, const char* why) const {
-    throw ParseError(source_, static_cast<std::size_t>(n.Mark().line + 1), key,
-                     n.IsScalar() ? n.Scalar() : "", why);
-  }
-  YAML::Node root_, current_;
-  std::string source_, name_;
-  std::set<std::string> seen_sections_, seen_keys_;
-};
-
-class Dumper {
- public:
-  void section(const char* name) { out_ << name << ":\n"; }
-  template <typename T>
-  void operator()(const char* key, const T& field, const char* doc) {
-    // fmt prints the shortest text that reads back to the same value (0.05, not 0.0500...01).
-    out_ << "  " << key << ": " << fmt::format("{}", field) << "  # " << doc << "\n";
-  }
-  std::string str() const { return out_.str(); }
-
- private:
-  std::ostringstream out_;
-};
-
 }  // namespace
 
 RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& source,
                                const RbpfOptions& base) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::ParserException& e) {
-    throw ParseError(source, static_cast<std::size_t>(e.mark.line + 1), "", "", e.msg);
-  }
+  const YAML::Node root = config::parse_sections(yaml, source);
   RbpfOptions o = base;
   if (root.IsNull()) return o;
-  if (!root.IsMap()) throw ParseError(source, 1, "", "", "top level must be a map of sections");
-  Loader loader(root, source);
+  config::SectionLoader loader(root, source);
   visit_sections(o, loader);
   loader.reject_unknown();
   try {
@@ -148,16 +81,12 @@ RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& sourc
 }
 
 RbpfOptions load_rbpf_options(const std::string& path, const RbpfOptions& base) {
-  std::ifstream in(path);
-  if (!in) throw ParseError(path, 0, "", "", "cannot open file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_rbpf_options(text.str(), path, base);
+  return parse_rbpf_options(config::read_text_file(path), path, base);
 }
 
 std::string dump_rbpf_options(const RbpfOptions& options) {
   RbpfOptions copy = options;
-  Dumper d;
+  config::SectionDumper d;
   visit_sections(copy, d);
   return d.str();
 }

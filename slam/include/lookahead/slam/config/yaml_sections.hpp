@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+// The machinery every lookahead YAML loader shares. A library lists its keys once, as a
+// visitor over (section, key, field, doc); SectionLoader reads a file through that list
+// (rejecting unknown sections and keys, errors naming file:line, key and value) and
+// SectionDumper prints it back with a comment per key. Libraries add overloads for their
+// enums by deriving.
+#pragma once
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace lookahead::slam::config {
+
+[[noreturn]] void fail_at(const std::string& source, const YAML::Node& node, const std::string& key,
+                          const std::string& why);
+
+/// Parses YAML text; syntax errors become ParseError(source, line). A null document is
+/// allowed (an empty file); anything else must be a map of sections.
+YAML::Node parse_sections(const std::string& text, const std::string& source);
+
+/// The whole text of a file; ParseError when it cannot be opened.
+std::string read_text_file(const std::string& path);
+
+class SectionLoader {
+ public:
+  SectionLoader(const YAML::Node& root, std::string source) : root_(root), source_(std::move(source)) {}
+  void section(const char* name);
+  template <typename T>
+  void operator()(const char* key, T& field, const char* /*doc*/) {
+    const YAML::Node n = node(key);
+    if (!n) return;
+    try {
+      field = n.as<T>();
+    } catch (const YAML::Exception&) {
+      fail_at(source_, n, name_ + "." + key, "bad value");
+    }
+  }
+  /// Every section and key of the document must have been visited (`skip`: sections
+  /// another loader reads).
+  void reject_unknown(const std::set<std::string>& skip = {}) const;
+
+ protected:
+  /// The key's node in the current section (undefined when absent), marked as seen.
+  YAML::Node node(const char* key);
+  [[nodiscard]] const std::string& source() const { return source_; }
+  [[nodiscard]] const std::string& section_name() const { return name_; }
+
+ private:
+  YAML::Node root_, current_;
+  std::string source_, name_;
+  std::set<std::string> seen_sections_, seen_keys_;
+};
+
+class SectionDumper {
+ public:
+  void section(const char* name) { out_ << name << ":\n"; }
+  template <typename T>
+  void operator()(const char* key, const T& field, const char* doc) {
+    // fmt prints the shortest text that reads back to the same value (0.05, not 0.0500...01).
+    line(key, fmt::format("{}", field), doc);
+  }
+  [[nodiscard]] std::string str() const { return out_.str(); }
+
+ protected:
+  void line(const char* key, const std::string& value, const char* doc) {
+    out_ << "  " << key << ": " << value << "  # " << doc << "\n";
+  }
+
+ private:
+  std::ostringstream out_;
+};
+
+}  // namespace lookahead::slam::config
