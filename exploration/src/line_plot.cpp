@@ -7,23 +7,15 @@
 #include <opencv2/imgproc.hpp>
 
 #include "lookahead/slam/io/parse_error.hpp"
+#include "plot_axes.hpp"
 
 namespace lookahead::exploration {
 namespace {
 
 constexpr int kLeft = 70, kRight = 20, kTop = 40, kBottom = 50;
 
-cv::Scalar bgr(slam::Rgb c) { return {double(c.b), double(c.g), double(c.r)}; }
-
-// A "nice" tick step (1, 2 or 5 times a power of ten) giving about five ticks.
-double tick_step(double span) {
-  const double raw = span / 5.0;
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  for (const double m : {1.0, 2.0, 5.0}) {
-    if (raw <= m * p) return m * p;
-  }
-  return 10.0 * p;
-}
+using plot::bgr;
+using plot::tick_step;
 
 void draw_axes(cv::Mat& img, const PlotOptions& o, double x_max) {
   const int w = img.cols, h = img.rows;

@@ -8,6 +8,7 @@
 
 #include "lookahead/exploration/line_plot.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "plot_axes.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -15,17 +16,8 @@ namespace {
 constexpr int kLeft = 70, kRight = 170, kTop = 55, kBottom = 60;  // room for title, ticks, legend
 const cv::Scalar kBlack(0, 0, 0), kGrey(215, 215, 215);
 
-cv::Scalar bgr(slam::Rgb c) { return {double(c.b), double(c.g), double(c.r)}; }
-
-// A round tick step (1, 2 or 5 times a power of ten) giving about five ticks up to `top`.
-double tick_step(double top) {
-  const double raw = top / 5.0;
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  for (const double m : {1.0, 2.0, 5.0}) {
-    if (raw <= m * p) return m * p;
-  }
-  return 10.0 * p;
-}
+using plot::bgr;
+using plot::tick_step;
 
 double axis_top(const BarChart& c) {
   double top = 0.0;
