@@ -60,6 +60,11 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v("kernel_linear", o.proposal.kernel_linear, "spacing of the 27 kernel points in x, y [m]");
   v("kernel_angular", o.proposal.kernel_angular, "spacing in theta [rad]");
   v("min_sigma_fraction", o.proposal.min_sigma_fraction, "floor of the fitted std, fraction of spacing");
+  v.section("prediction");
+  v("enabled", o.prediction.enabled, "P-SLAM: hypotheses in the weights (--predict)");
+  v("hit_ratio_threshold", o.prediction.hit_ratio_threshold, "hr_Th: prediction unused when every particle is below");
+  v("min_predicted_beams", o.prediction.min_predicted_beams, "fewer end points on a hypothesis carry no evidence");
+  v("max_hypotheses", o.prediction.max_hypotheses, "hypotheses kept at once (oldest dropped)");
 }
 
 }  // namespace

@@ -32,6 +32,13 @@ void validate(const RbpfOptions& o) {
   if (!(o.weight_exponent > 0 && o.weight_exponent <= 1)) {
     throw std::invalid_argument("weight_exponent in (0, 1]");
   }
+  const PredictionOptions& pr = o.prediction;
+  if (!(pr.hit_ratio_threshold >= 0 && pr.hit_ratio_threshold <= 1)) {
+    throw std::invalid_argument("prediction.hit_ratio_threshold in [0, 1]");
+  }
+  if (pr.min_predicted_beams < 1 || pr.max_hypotheses < 1) {
+    throw std::invalid_argument("prediction.min_predicted_beams and max_hypotheses >= 1");
+  }
 }
 
 }  // namespace
@@ -61,7 +68,7 @@ bool Rbpf::add_scan(const LaserScan& scan) {
 
 void Rbpf::initialize(const LaserScan& scan) {
   // The map frame is the odometry frame at the first scan, so maps and odometry overlay.
-  Particle p{scan.odometry, prototype_grid_, 0.0, nullptr};
+  Particle p{scan.odometry, prototype_grid_, 0.0, nullptr, {}};
   insert_scan(p.map, p.pose, scan, options_.insert);
   p.trajectory = std::make_shared<TrajectoryNode>(p.pose, 0, nullptr);
   particles_.assign(static_cast<std::size_t>(options_.particles), p);
@@ -78,7 +85,7 @@ bool Rbpf::motion_threshold_met(const LaserScan& scan) const {
 
 void Rbpf::update_particle(Particle& p, const Pose2& u, const LaserScan& scan,
                            const PreparedScan& prepared, std::mt19937_64& rng,
-                           bool& failed) const {
+                           bool& failed, HypothesisScore& on_hypotheses) const {
   const Pose2 predicted = p.pose.compose(u);
   const bool warm = stats_.updates > static_cast<std::size_t>(options_.warmup_updates);
   MatchResult m;
@@ -97,6 +104,10 @@ void Rbpf::update_particle(Particle& p, const Pose2& u, const LaserScan& scan,
     }
     failed = warm;
   }
+  // S2 reads the map before this scan (m_{k-1}): after insertion every end point is explored.
+  if (warm && !hypotheses_.empty()) {
+    on_hypotheses = score_on_hypotheses(p.map, p.pose, prepared, hypotheses_, p.hypothesis_offsets, likelihood_);
+  }
   insert_scan(p.map, p.pose, scan, options_.insert);
   p.trajectory = std::make_shared<TrajectoryNode>(p.pose, timestamps_.size() - 1, p.trajectory);
 }
@@ -107,16 +118,66 @@ void Rbpf::update_particles(const LaserScan& scan) {
   const int n = static_cast<int>(particles_.size());
   const int threads = options_.threads > 0 ? options_.threads : omp_get_num_procs();
   std::vector<char> failed(particles_.size(), 0);
+  std::vector<HypothesisScore> predicted(particles_.size());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
     std::mt19937_64 rng(mix_seed(options_.seed, stats_.updates, static_cast<std::uint64_t>(i)));
     bool f = false;
-    update_particle(particles_[static_cast<std::size_t>(i)], u, scan, prepared, rng, f);
-    failed[static_cast<std::size_t>(i)] = f ? 1 : 0;
+    update_particle(particles_[k], u, scan, prepared, rng, f, predicted[k]);
+    failed[k] = f ? 1 : 0;
   }
+  if (!hypotheses_.empty()) apply_hypothesis_weights(predicted);
   stats_.match_failures += static_cast<std::size_t>(std::count(failed.begin(), failed.end(), 1));
   stats_.particle_updates += particles_.size();
   ++stats_.updates;
+}
+
+// Eq. 21-22: w = w S1(z_e | m) S2(z_u | h). S1 is already in the weight: the improved
+// proposal's eta scores every end point on m, and end points in unexplored cells score the
+// same constant there. Deviation: the paper assumes the motion-model proposal; we keep the
+// improved proposal (scan matching on m only) and multiply S2 at the drawn pose, tempered
+// with the same exponent k as eta.
+void Rbpf::apply_hypothesis_weights(const std::vector<HypothesisScore>& scores) {
+  const auto& o = options_.prediction;
+  bool any_predicted = false, any_hit = false;
+  for (const HypothesisScore& s : scores) {
+    if (s.predicted_beams < o.min_predicted_beams) continue;
+    any_predicted = true;
+    any_hit = any_hit || s.hit_ratio() >= o.hit_ratio_threshold;
+  }
+  if (!any_predicted) return;
+  ++stats_.predicted_updates;
+  if (!any_hit) {  // eq. 23: no particle sees the prediction; it must be wrong here
+    ++stats_.prediction_rejected;
+    return;
+  }
+  ++stats_.prediction_used;
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    // A particle below min_predicted_beams sees (almost) no predicted cells: its S2 over
+    // the few it sees is still its evidence, so every particle gets its own S2.
+    particles_[i].log_weight += options_.weight_exponent * scores[i].log_likelihood;
+  }
+}
+
+void Rbpf::add_hypothesis(std::shared_ptr<const HypothesisMap> hypothesis) {
+  if (!options_.prediction.enabled || !hypothesis || particles_.empty()) return;
+  const Pose2 best = particles_[best_particle()].pose;
+  const auto max = static_cast<std::size_t>(std::max(1, options_.prediction.max_hypotheses));
+  const bool drop_oldest = hypotheses_.size() >= max;
+  if (drop_oldest) hypotheses_.erase(hypotheses_.begin());
+  hypotheses_.push_back(std::move(hypothesis));
+  for (Particle& p : particles_) {
+    if (drop_oldest) p.hypothesis_offsets.erase(p.hypothesis_offsets.begin());
+    // offset (+) x_n = x_best: a point seen from particle n lands where the best sees it.
+    p.hypothesis_offsets.push_back(best.compose(p.pose.inverse()));
+  }
+  ++stats_.hypotheses_added;
+}
+
+void Rbpf::clear_hypotheses() {
+  hypotheses_.clear();
+  for (Particle& p : particles_) p.hypothesis_offsets.clear();
 }
 
 void Rbpf::resample_if_needed() {

@@ -81,4 +81,13 @@ double LikelihoodFieldModel::hit_ratio(const OccupancyGrid& grid, const Pose2& r
   return static_cast<double>(hits) / static_cast<double>(scan.x.size());
 }
 
+double LikelihoodFieldModel::end_point_log_likelihood(const OccupancyGrid& grid, double wx,
+                                                      double wy, bool& hit) const {
+  const CellIndex cell = grid.cell_at(wx, wy);
+  const int d2 = grid.dist2(cell);
+  hit = d2 <= hit_dist2_;
+  if (d2 == GridTile::kFar && !grid.is_known(cell)) return log_unknown_;
+  return log_by_dist2_[static_cast<std::size_t>(d2)];
+}
+
 }  // namespace lookahead::slam

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <vector>
 
 #include "lookahead/slam/geometry/pose2.hpp"
 #include "lookahead/slam/grid/occupancy_grid.hpp"
@@ -30,6 +31,9 @@ struct Particle {
   OccupancyGrid map;
   double log_weight = 0.0;
   std::shared_ptr<const TrajectoryNode> trajectory;
+  /// P-SLAM: per active hypothesis, the transform from this particle's map frame into the
+  /// hypothesis frame (the best particle's when it was added: sec. IV-B).
+  std::vector<Pose2> hypothesis_offsets;
 };
 
 }  // namespace lookahead::slam

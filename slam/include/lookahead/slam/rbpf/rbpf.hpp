@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "lookahead/slam/rbpf/hypothesis_weight.hpp"
 #include "lookahead/slam/rbpf/motion_model.hpp"
 #include "lookahead/slam/rbpf/particle.hpp"
 #include "lookahead/slam/rbpf/rbpf_options.hpp"
@@ -24,6 +25,11 @@ struct RbpfStatistics {
   std::size_t match_failures = 0;    ///< particle updates that fell back to odometry
   std::size_t particle_updates = 0;
   std::vector<double> neff;          ///< N_eff after each update
+  // P-SLAM (only counted when prediction is enabled)
+  std::size_t hypotheses_added = 0;
+  std::size_t predicted_updates = 0;  ///< updates with enough end points on a hypothesis
+  std::size_t prediction_used = 0;    ///< ... whose S2 entered the weights
+  std::size_t prediction_rejected = 0;  ///< ... dropped by the hit-ratio recovery rule (eq. 23)
 };
 
 class Rbpf {
@@ -32,6 +38,15 @@ class Rbpf {
 
   /// Feeds one scan (in time order). Returns true when the filter ran an update on it.
   bool add_scan(const LaserScan& scan);
+
+  /// P-SLAM: a new hypothesis, predicted on the best particle's map. Every particle gets it
+  /// moved by its pose relative to the best particle (sec. IV-B); the oldest is dropped
+  /// beyond prediction.max_hypotheses. Ignored when prediction is disabled.
+  void add_hypothesis(std::shared_ptr<const HypothesisMap> hypothesis);
+  void clear_hypotheses();
+  [[nodiscard]] const std::vector<std::shared_ptr<const HypothesisMap>>& hypotheses() const {
+    return hypotheses_;
+  }
 
   [[nodiscard]] const std::vector<Particle>& particles() const { return particles_; }
   [[nodiscard]] std::size_t best_particle() const;
@@ -50,8 +65,10 @@ class Rbpf {
   void initialize(const LaserScan& scan);
   bool motion_threshold_met(const LaserScan& scan) const;
   void update_particle(Particle& p, const Pose2& u, const LaserScan& scan,
-                       const PreparedScan& prepared, std::mt19937_64& rng, bool& failed) const;
+                       const PreparedScan& prepared, std::mt19937_64& rng, bool& failed,
+                       HypothesisScore& predicted) const;
   void update_particles(const LaserScan& scan);
+  void apply_hypothesis_weights(const std::vector<HypothesisScore>& scores);
   void resample_if_needed();
 
   RbpfOptions options_;
@@ -60,6 +77,7 @@ class Rbpf {
   LikelihoodFieldModel likelihood_;
   ScanMatcher matcher_;
   std::vector<Particle> particles_;
+  std::vector<std::shared_ptr<const HypothesisMap>> hypotheses_;
   std::mt19937_64 rng_;
   Pose2 last_update_odometry_;
   std::vector<double> timestamps_;

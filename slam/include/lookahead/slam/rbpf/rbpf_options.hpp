@@ -7,6 +7,7 @@
 
 #include "lookahead/slam/grid/grid_options.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/rbpf/hypothesis.hpp"
 #include "lookahead/slam/rbpf/improved_proposal.hpp"
 #include "lookahead/slam/rbpf/motion_model.hpp"
 #include "lookahead/slam/rbpf/scan_matcher.hpp"
@@ -36,6 +37,7 @@ struct RbpfOptions {
   LikelihoodOptions likelihood;
   ScanMatcherOptions matcher;
   ProposalOptions proposal;
+  PredictionOptions prediction;  ///< P-SLAM: hypotheses in the weights (off by default)
 };
 
 }  // namespace lookahead::slam

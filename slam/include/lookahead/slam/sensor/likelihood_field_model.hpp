@@ -43,6 +43,10 @@ class LikelihoodFieldModel {
   /// Share of end points within one sigma-ish of an obstacle (a match-quality figure).
   [[nodiscard]] double hit_ratio(const OccupancyGrid& grid, const Pose2& robot,
                                  const PreparedScan& scan) const;
+  /// Tempered log-likelihood of one end point at world (wx, wy) on `grid`; `hit` tells
+  /// whether it lies within the hit distance of an obstacle (P-SLAM's z_u scoring).
+  [[nodiscard]] double end_point_log_likelihood(const OccupancyGrid& grid, double wx, double wy,
+                                                bool& hit) const;
   [[nodiscard]] const LikelihoodOptions& options() const { return options_; }
 
  private:

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/predictor/registration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+namespace lookahead::predictor {
+namespace {
+
+// The reference corners to try: all but the control point's own, at most the cap (a seeded
+// random subset beyond it: the paper's fixed search bound, sec. III-A).
+std::vector<const Corner*> reference_corners(const Corner& control, const std::vector<Corner>& corners,
+                                             const PredictorOptions& o) {
+  std::vector<const Corner*> out;
+  for (const Corner& c : corners) {
+    if (std::hypot(c.x - control.x, c.y - control.y) >= o.min_reference_distance) out.push_back(&c);
+  }
+  const auto cap = static_cast<std::size_t>(o.max_reference_corners);
+  if (out.size() > cap) {
+    std::mt19937_64 rng(o.seed);
+    std::shuffle(out.begin(), out.end(), rng);
+    out.resize(cap);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::array<slam::Pose2, 4> corner_alignments(const Corner& control, const Corner& reference) {
+  const double p1[2] = {control.angle_a, control.angle_b};
+  const double p2[2] = {reference.angle_a, reference.angle_b};
+  std::array<slam::Pose2, 4> out;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double theta = slam::normalize_angle(p1[i] - p2[j]);
+      const double c = std::cos(theta), s = std::sin(theta);
+      // Rotate about P2, then move P2 onto P1.
+      out[static_cast<std::size_t>(2 * i + j)] = {control.x - (c * reference.x - s * reference.y),
+                                                  control.y - (s * reference.x + c * reference.y), theta};
+    }
+  }
+  return out;
+}
+
+Registration register_region(const CoarseOccupancy& map, const RegionSamples& target_region,
+                             const Corner& control, const std::vector<Corner>& corners,
+                             const PredictorOptions& o) {
+  Registration r;
+  const double min_new = o.min_predicted_area / (map.resolution() * map.resolution());
+  for (const Corner* ref : reference_corners(control, corners, o)) {
+    for (const slam::Pose2& t : corner_alignments(control, *ref)) {
+      ++r.candidates;
+      const SimilarityScore s = similarity(map, map, target_region, t);
+      if (s.new_known < min_new) continue;  // explains explored cells only: predicts nothing
+      if (!r.best || s.psi > r.best->score.psi) r.best = Alignment{t, control, *ref, s};
+    }
+  }
+  return r;
+}
+
+}  // namespace lookahead::predictor

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/predictor/structure_predictor.hpp"
+
+#include <gtest/gtest.h>
+
+#include "lookahead/predictor/prediction_worker.hpp"
+#include "square_maze_grid.hpp"
+
+namespace lookahead::predictor {
+namespace {
+
+using test::kPeriod;
+
+// Share of the hypothesis' occupied cells that lie on (or within 0.15 m of) a true wall.
+double occupied_precision(const slam::HypothesisMap& h) {
+  slam::CellIndex lo, hi;
+  if (!h.grid.known_bounds(lo, hi)) return 0.0;
+  int occupied = 0, right = 0;
+  for (int y = lo.y; y <= hi.y; ++y) {
+    for (int x = lo.x; x <= hi.x; ++x) {
+      if (!h.grid.is_known({x, y}) || h.grid.probability({x, y}) < 0.65) continue;
+      double cx = 0, cy = 0;
+      h.grid.cell_center({x, y}, cx, cy);
+      ++occupied;
+      right += test::maze_cell(cx, cy, 0.15) == 1;
+    }
+  }
+  return occupied > 0 ? static_cast<double>(right) / occupied : 0.0;
+}
+
+TEST(CornerAlignments, EveryTransformPutsTheReferenceCornerOnTheControlPoint) {
+  const Corner p1{2.0, 1.0, 0.3, 0.3 + M_PI / 2};
+  const Corner p2{-4.0, 5.0, 1.0, 1.0 - M_PI / 2};
+  for (const slam::Pose2& t : corner_alignments(p1, p2)) {
+    const slam::Pose2 moved = t.compose({p2.x, p2.y, 0});
+    EXPECT_NEAR(moved.x, p1.x, 1e-9);
+    EXPECT_NEAR(moved.y, p1.y, 1e-9);
+  }
+  // theta = phi_i(P1) - phi_j(P2): aligning line a with line a rotates by -0.7.
+  EXPECT_NEAR(corner_alignments(p1, p2)[0].theta, -0.7, 1e-9);
+}
+
+TEST(StructurePredictor, PredictsTheNextSquaresOfTheMaze) {
+  const slam::OccupancyGrid map = test::maze_grid(12.0);
+  const Prediction p = predict_structure(map, 12.0, kPeriod + 1.1, {});
+  ASSERT_EQ(p.status, Prediction::Status::kPredicted) << to_string(p.status);
+  ASSERT_TRUE(p.alignment);
+  EXPECT_GE(p.alignment->score.psi, 0.6);
+  EXPECT_GT(p.predicted_area, 10.0);  // most of the unexplored half disc (39 m^2)
+  EXPECT_GT(occupied_precision(*p.hypothesis), 0.9);
+  // The hypothesis covers unexplored cells only.
+  slam::CellIndex lo, hi;
+  ASSERT_TRUE(p.hypothesis->grid.known_bounds(lo, hi));
+  for (int y = lo.y; y <= hi.y; ++y)
+    for (int x = lo.x; x <= hi.x; ++x)
+      if (p.hypothesis->grid.is_known({x, y})) ASSERT_FALSE(map.is_known({x, y}));
+}
+
+TEST(StructurePredictor, NoCornerInRangeMeansNoPrediction) {
+  const slam::OccupancyGrid map = test::maze_grid(12.0);
+  PredictorOptions o;
+  o.control_point_range = 0.2;
+  EXPECT_EQ(predict_structure(map, 12.0, kPeriod + 1.1, o).status, Prediction::Status::kNoControlPoint);
+}
+
+TEST(StructurePredictor, ARandomWallPatternFindsNoMatchAboveThreshold) {
+  // Walls at irregular places: no reference region resembles the target's.
+  slam::OccupancyGrid map;
+  const double xs[] = {0.7, 2.9, 3.4, 6.1, 8.8};
+  const double ys[] = {1.3, 2.2, 5.9, 4.1, 0.4};
+  for (double y = 0.025; y < 10; y += 0.05)
+    for (double x = 0.025; x < 10; x += 0.05) map.add_log_odds(map.cell_at(x, y), -1000);
+  for (int i = 0; i < 5; ++i) {
+    const double len = 1.0 + 0.6 * i, a = 0.4 * i * i;
+    for (double t = 0; t <= len; t += 0.02) {
+      map.add_log_odds(map.cell_at(xs[i] + t * std::cos(a), ys[i] + t * std::sin(a)), 3000);
+      map.add_log_odds(map.cell_at(xs[i] - t * std::sin(a) * 0.5, ys[i] + t * std::cos(a) * 0.5), 3000);
+    }
+  }
+  PredictorOptions o;
+  o.control_point_range = 20.0;  // any corner will do: registration must run and fail
+  const Prediction p = predict_structure(map, 9.9, 5.0, o);
+  EXPECT_GT(p.candidates, 0);
+  EXPECT_EQ(p.status, Prediction::Status::kNoMatch);
+}
+
+TEST(StructurePredictor, ThresholdOutsideThePapersRangeIsRejected) {
+  PredictorOptions o;
+  o.similarity_threshold = 0.9;
+  EXPECT_THROW(predict_structure(slam::OccupancyGrid{}, 0, 0, o), std::invalid_argument);
+}
+
+TEST(PredictionWorker, DeliversWhatTheSynchronousCallComputes) {
+  const slam::OccupancyGrid map = test::maze_grid(12.0);
+  PredictionWorker worker({});
+  EXPECT_FALSE(worker.wait().has_value());  // nothing asked yet
+  worker.request(map, 12.0, kPeriod + 1.1);
+  const std::optional<Prediction> p = worker.wait();
+  ASSERT_TRUE(p.has_value());
+  const Prediction q = predict_structure(map, 12.0, kPeriod + 1.1, {});
+  EXPECT_EQ(p->status, q.status);
+  EXPECT_DOUBLE_EQ(p->predicted_area, q.predicted_area);
+  EXPECT_FALSE(worker.busy());
+  EXPECT_FALSE(worker.poll().has_value());  // wait() handed it over
+}
+
+}  // namespace
+}  // namespace lookahead::predictor
