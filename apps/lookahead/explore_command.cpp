@@ -35,6 +35,7 @@ struct ExploreArgs {
   std::vector<double> start;
   bool animation = true;
   bool log = false;
+  bool predict = false;
   double laser_range = 0.0;
   double laser_fov_deg = 0.0;
   int threads = 0;
@@ -45,6 +46,7 @@ exploration::MissionOptions mission_options(const ExploreArgs& a) {
   exploration::MissionOptions o = a.config.empty() ? exploration::MissionOptions::defaults()
                                                   : exploration::load_mission_options(a.config);
   if (a.strategy) o.strategy = *a.strategy;
+  if (a.predict) o.slam.prediction.enabled = true;  // P-SLAM weights; implies predictions
   o.seed = a.seed;
   if (a.particles) o.slam.particles = *a.particles;
   if (a.time_limit) o.time_limit = *a.time_limit;
@@ -110,7 +112,8 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--robot-radius", a->robot_radius, "robot disc radius [m] (default 0.25, a Pioneer 3-DX)");
   app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores")->capture_default_str();
   app.add_option("--start", a->start, "start pose x y theta (default: the world's)")->expected(3);
-  app.add_option("--strategy", a->strategy, "nearest | utility (default nearest)");
+  app.add_option("--strategy", a->strategy, "nearest | utility | predictive | predictive-utility (P-SLAM: skip predicted frontiers)");
+  app.add_flag("--predict", a->predict, "P-SLAM: predict at each target and use hypotheses in the particle weights");
   app.add_option("--pose", a->pose, "slam (RBPF in the loop) | truth (planner-only); default slam");
   app.add_option("--seed", a->seed, "seed of the world, sensor, odometry, SLAM and planner")->capture_default_str();
   app.add_option("--particles", a->particles, "RBPF particles (default 30)");

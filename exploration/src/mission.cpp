@@ -27,6 +27,8 @@ namespace {
 
 MissionOptions checked(MissionOptions o) {
   o.validate();
+  // The predictive strategy and a filter that uses hypotheses both need predictions made.
+  o.lookahead.enabled = o.lookahead.enabled || make_strategy(o.strategy)->uses_prediction() || o.slam.prediction.enabled;
   return o;
 }
 
@@ -44,9 +46,11 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       meter_(world, reachable_, options.free_threshold),
       frontiers_(options.frontiers),
       blacklist_(options.blacklist),
-      strategy_(options.strategy == "utility" ? std::make_unique<UtilityStrategy>(options.utility_lambda)
-                                              : make_strategy(options.strategy)) {
+      strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)) {
   if (!reachable_.start_valid) throw std::invalid_argument("mission: the start pose is in collision");
+  if (options_.lookahead.enabled) {
+    lookahead_ = std::make_unique<LookaheadMapping>(options_.lookahead, world_, options_.slam.grid);
+  }
   if (options_.pose_source == PoseSource::kSlam) rbpf_ = std::make_unique<slam::Rbpf>(options_.slam);
   last_refresh_pose_ = start;
 }
@@ -68,6 +72,7 @@ slam::Pose2 Mission::estimate() const {
 MissionStatus Mission::step() {
   if (status_ != MissionStatus::kRunning) return status_;
   sense();    // laser and odometry into the map
+  deliver_prediction();  // a finished hypothesis joins the look-ahead map and the filter
   refresh();  // costmap, frontiers and the current path, after a map update
   decide();   // a new target when the old one is reached, explored, blocked or stuck
   act();      // pure pursuit -> unicycle in the true world
@@ -109,6 +114,15 @@ void Mission::sense() {
                  std::abs(moved.theta) >= options_.slam.angular_update;
 }
 
+void Mission::deliver_prediction() {
+  if (!lookahead_) return;
+  std::shared_ptr<const slam::HypothesisMap> h = lookahead_->deliver(time_);
+  if (!h) return;
+  // Look-ahead: the target's surroundings may now be predicted well enough to skip it.
+  if (strategy_->uses_prediction()) reselect_ = true;
+  if (rbpf_) rbpf_->add_hypothesis(std::move(h));  // ignored unless prediction is on
+}
+
 void Mission::refresh() {
   if (!map_changed_) return;
   last_refresh_pose_ = robot_.pose();
@@ -147,7 +161,8 @@ bool Mission::goal_still_useful() const {
 
 void Mission::decide() {
   if (turned_ < options_.initial_turn || costmap_.empty()) return;
-  bool need = !follower_ || follower_->goal_reached();
+  bool need = !follower_ || follower_->goal_reached() || reselect_;
+  reselect_ = false;
   // A reached goal whose frontier is still there cannot be explored from there (a corner
   // the sensor cannot see from its goal): do not pick it again for a while.
   if (follower_ && follower_->goal_reached() && goal_) blacklist_.add(goal_->x, goal_->y, time_);
@@ -174,6 +189,10 @@ void Mission::decide() {
   SelectionInputs in{&map(), &costmap_, &frontiers_, strategy_.get(), &blacklist_, estimate(), time_,
                      options_.laser.max_range, options_.max_goal_attempts, options_.planner};
   in.planner.seed = static_cast<std::uint32_t>(options_.planner.seed + static_cast<std::uint32_t>(stats_.selections));
+  if (lookahead_) {
+    in.predicted = &lookahead_->predicted();
+    in.skip_confidence = options_.lookahead.skip_confidence;
+  }
   const Selection s = select_target(in);
   spdlog::debug("t {:.1f}: selection {}: clusters {}, candidates {}, plans {} ({} failed)", time_,
                 static_cast<int>(s.outcome), s.clusters, s.candidates, s.plans, s.plan_failures);
@@ -184,6 +203,7 @@ void Mission::decide() {
   stats_.planning_time += s.planning_time;
   if (s.outcome == SelectionOutcome::kNoFrontier) {
     status_ = MissionStatus::kDone;
+    stats_.ended_on_predictions = s.rest_predicted;
   } else if (s.outcome != SelectionOutcome::kPlanned) {
     // Maybe only for now: turn once more to look around, and give up after three tries.
     if (++unreachable_streak_ >= 3) status_ = MissionStatus::kTrapped;
@@ -191,6 +211,8 @@ void Mission::decide() {
   } else {
     unreachable_streak_ = 0;
     goal_ = planner::Point2{s.goal_x, s.goal_y};
+    // P-SLAM predicts the region around the next exploration goal (sec. II-A, step 1).
+    if (lookahead_) lookahead_->request(map(), s.goal_x, s.goal_y, time_);
     follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
     const slam::Pose2 p = estimate();
     best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);

@@ -20,7 +20,7 @@ namespace {
 template <typename V>
 void visit_robot_sections(MissionOptions& o, V&& v) {
   v.section("mission");
-  v("strategy", o.strategy, "target selection: nearest | utility");
+  v("strategy", o.strategy, "target selection: nearest | utility | predictive | predictive-utility");
   v("utility_lambda", o.utility_lambda, "utility = gain [m^2] - lambda * cost [m]");
   v("pose_source", o.pose_source, "slam (RBPF in the loop) | truth (map at the true pose)");
   v("seed", o.seed, "seeds the sensor, odometry, SLAM (filter.seed) and planner");
@@ -52,6 +52,26 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v("stt", o.odometry.stt, "rotation per radian [rad/rad]");
 }
 
+// P-SLAM look-ahead mapping: the predictor's options and their use in exploration. (The
+// filter's use of hypotheses is slam.prediction.)
+template <typename V>
+void visit_lookahead_section(LookaheadOptions& o, V&& v) {
+  v.section("lookahead");
+  v("enabled", o.enabled, "predict at each new target (on with --predict or strategy predictive)");
+  v("latency", o.latency, "a prediction is delivered this long after its request [s, simulated]");
+  v("skip_confidence", o.skip_confidence, "predictive strategy: hypotheses with Psi >= this may be skipped");
+  v("skip_share", o.skip_share, "... skip a frontier when this share of its far side is predicted");
+  v("surroundings_diameter", o.predictor.surroundings_diameter, "d: surroundings S_f and prediction range [m]");
+  v("control_point_range", o.predictor.control_point_range, "control point: nearest corner within [m]");
+  v("similarity_threshold", o.predictor.similarity_threshold, "Psi for a hypothesis, 0.4..0.7");
+  v("similarity_resolution", o.predictor.similarity_resolution, "Psi is measured on cells of [m]");
+  v("similarity_tolerance_cells", o.predictor.similarity_tolerance_cells, "walls this many Psi cells apart overlap");
+  v("max_reference_corners", o.predictor.max_reference_corners, "search bound: reference corners tried");
+  v("min_reference_distance", o.predictor.min_reference_distance, "reference corners at least this far from P1 [m]");
+  v("min_predicted_area", o.predictor.min_predicted_area, "a hypothesis predicts at least [m^2]");
+  v("max_conflict_share", o.predictor.max_conflict_share, "alignments with more walls on known free cells are rejected");
+}
+
 template <typename V>
 void visit_planning_sections(MissionOptions& o, V&& v) {
   v.section("planner");
@@ -76,6 +96,7 @@ void visit_planning_sections(MissionOptions& o, V&& v) {
   v.section("blacklist");
   v("radius", o.blacklist.radius, "goals this close to a failed one are skipped [m]");
   v("lifetime", o.blacklist.lifetime, "mission seconds an entry lasts");
+  visit_lookahead_section(o.lookahead, v);
 }
 
 template <typename V>

@@ -21,12 +21,15 @@ CoverageMeter::CoverageMeter(const World& world, const ReachableArea& area, doub
   }
 }
 
-double CoverageMeter::coverage(const slam::OccupancyGrid& map) const {
+double CoverageMeter::coverage(const slam::OccupancyGrid& map) const { return coverage(map, nullptr); }
+
+double CoverageMeter::coverage(const slam::OccupancyGrid& map,
+                               const std::function<bool(double, double)>& also_covered) const {
   if (points_.empty()) return 0.0;
   std::size_t known = 0;
   for (const auto& [x, y] : points_) {
     const slam::CellIndex c = map.cell_at(x, y);
-    if (map.is_known(c) && map.probability(c) < free_threshold_) ++known;
+    if ((map.is_known(c) && map.probability(c) < free_threshold_) || (also_covered && also_covered(x, y))) ++known;
   }
   return static_cast<double>(known) / static_cast<double>(points_.size());
 }

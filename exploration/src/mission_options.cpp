@@ -33,6 +33,12 @@ void MissionOptions::harmonize() {
   odometry.seed = seed + 1;
   slam.seed = seed + 2;
   planner.seed = static_cast<std::uint32_t>(seed + 3);
+  // Predictions are made when the strategy needs them or the filter uses them.
+  try {
+    lookahead.enabled = lookahead.enabled || make_strategy(strategy)->uses_prediction() || slam.prediction.enabled;
+  } catch (const std::invalid_argument&) {
+    // an unknown strategy name: validate() reports it
+  }
 }
 
 void MissionOptions::validate() const {
@@ -40,6 +46,10 @@ void MissionOptions::validate() const {
     if (!ok) throw std::invalid_argument(std::string("mission option out of range: ") + what);
   };
   make_strategy(strategy);  // throws on an unknown name
+  require(lookahead.latency >= 0, "lookahead.latency >= 0");
+  require(lookahead.skip_confidence >= 0 && lookahead.skip_confidence <= 1, "lookahead.skip_confidence in [0, 1]");
+  require(lookahead.skip_share > 0 && lookahead.skip_share <= 1, "lookahead.skip_share in (0, 1]");
+  predictor::validate(lookahead.predictor);
   require(time_limit > 0, "time_limit > 0");
   require(coverage_goal > 0 && coverage_goal <= 1, "coverage_goal in (0, 1]");
   require(goal_check_period > 0 && metrics_period > 0, "periods > 0");

@@ -38,8 +38,26 @@ MissionSummary summarize(const Mission& m, const std::string& world_name, double
   s.statistics = m.statistics();
   s.wall_time = wall_time;
   s.real_time_factor = wall_time > 0 ? m.time() / wall_time : 0.0;
+  s.prediction = summarize_predictions(m);
   return s;
 }
+
+namespace {
+
+nlohmann::json prediction_json(const PredictionSummary& p) {
+  return {{"requests", p.requests}, {"hypotheses", p.hypotheses}, {"no_control_point", p.no_control_point},
+          {"no_match", p.no_match}, {"psi_world", p.psi_world}, {"mean_psi_world", p.mean_psi_world},
+          {"share_psi_world_above_0_4", p.share_psi_world_above_04}, {"predicted_area_m2", p.predicted_area},
+          {"cell_accuracy", p.cell_accuracy}, {"mean_prediction_s", p.mean_seconds},
+          {"max_prediction_s", p.max_seconds}, {"final_predicted_area_m2", p.final_predicted_area},
+          {"final_predicted_accuracy", p.final_predicted_accuracy},
+          {"coverage_with_predictions", p.coverage_with_predictions},
+          {"ended_on_predictions", p.ended_on_predictions},
+          {"filter", {{"hypotheses", p.filter_hypotheses}, {"predicted_updates", p.filter_predicted_updates},
+                      {"used", p.filter_used}, {"rejected_by_hit_ratio", p.filter_rejected}}}};
+}
+
+}  // namespace
 
 std::string to_json(const MissionSummary& s) {
   nlohmann::json j;
@@ -70,6 +88,7 @@ std::string to_json(const MissionSummary& s) {
   j["scans"] = s.statistics.scans;
   j["wall_time_s"] = s.wall_time;
   j["real_time_factor"] = s.real_time_factor;
+  if (s.prediction.enabled) j["prediction"] = prediction_json(s.prediction);
   return j.dump(2) + "\n";
 }
 

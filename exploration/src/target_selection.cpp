@@ -66,7 +66,14 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
     if (!std::isfinite(d)) continue;
     any_reachable = true;
     if (in.blacklist->contains(f.goal_x, f.goal_y, in.now)) continue;
-    out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range)});
+    if (in.predicted && in.strategy->uses_prediction()) {
+      const PredictedMap& pm = *in.predicted;
+      const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
+      out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known),
+                     pm.predicted_share(*in.map, f, in.skip_confidence)});
+      continue;
+    }
+    out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range), 0.0});
   }
   return out;
 }
@@ -93,7 +100,13 @@ Selection select_target(const SelectionInputs& in) {
   s.outcome = candidates.empty() ? SelectionOutcome::kUnreachable : SelectionOutcome::kPlanFailed;
   for (int attempt = 0; attempt < in.max_attempts && !candidates.empty(); ++attempt) {
     const auto pick = in.strategy->choose(candidates);
-    if (!pick) break;
+    if (!pick) {
+      if (attempt == 0) {  // every frontier left is predicted: look-ahead mapping is done
+        s.outcome = SelectionOutcome::kNoFrontier;
+        s.rest_predicted = true;
+      }
+      break;
+    }
     const FrontierCluster& target = *candidates[*pick].cluster;
     const slam::Pose2 from{start->x, start->y, in.pose.theta};
     planner::PlanResult r = planner::plan(*in.costmap, from, target.goal_x, target.goal_y, in.planner);

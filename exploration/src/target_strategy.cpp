@@ -3,6 +3,8 @@
 
 #include <stdexcept>
 
+#include "lookahead/exploration/prediction_aware_strategy.hpp"
+
 namespace lookahead::exploration {
 
 std::optional<std::size_t> NearestFrontierStrategy::choose(const std::vector<Candidate>& c) const {
@@ -26,10 +28,16 @@ std::optional<std::size_t> UtilityStrategy::choose(const std::vector<Candidate>&
   return best;
 }
 
-std::unique_ptr<TargetStrategy> make_strategy(const std::string& name) {
+std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double lambda, double skip_share) {
   if (name == "nearest") return std::make_unique<NearestFrontierStrategy>();
-  if (name == "utility") return std::make_unique<UtilityStrategy>();
-  throw std::invalid_argument("unknown strategy '" + name + "' (choose nearest or utility)");
+  if (name == "utility") return std::make_unique<UtilityStrategy>(lambda);
+  if (name == "predictive") {
+    return std::make_unique<PredictionAwareStrategy>(std::make_unique<NearestFrontierStrategy>(), skip_share);
+  }
+  if (name == "predictive-utility") {
+    return std::make_unique<PredictionAwareStrategy>(std::make_unique<UtilityStrategy>(lambda), skip_share);
+  }
+  throw std::invalid_argument("unknown strategy '" + name + "' (nearest, utility, predictive or predictive-utility)");
 }
 
 }  // namespace lookahead::exploration

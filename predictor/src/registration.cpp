@@ -26,6 +26,13 @@ std::vector<const Corner*> reference_corners(const Corner& control, const std::v
   return out;
 }
 
+// Psi decides; alignments within a hundredth of each other are equally good (a symmetric
+// building has several), and the one that predicts more of the unexplored region wins.
+bool better(const SimilarityScore& a, const SimilarityScore& b) {
+  constexpr double kTie = 0.01;
+  return a.psi > b.psi + kTie || (a.psi >= b.psi - kTie && a.new_known > b.new_known);
+}
+
 }  // namespace
 
 std::array<slam::Pose2, 4> corner_alignments(const Corner& control, const Corner& reference) {
@@ -54,7 +61,8 @@ Registration register_region(const CoarseOccupancy& map, const RegionSamples& ta
       ++r.candidates;
       const SimilarityScore s = similarity(map, map, target_region, t);
       if (s.new_known < min_new) continue;  // explains explored cells only: predicts nothing
-      if (!r.best || s.psi > r.best->score.psi) r.best = Alignment{t, control, *ref, s};
+      if (s.conflict_share() > o.max_conflict_share) continue;  // walls across known free space
+      if (!r.best || better(s, r.best->score)) r.best = Alignment{t, control, *ref, s};
     }
   }
   return r;

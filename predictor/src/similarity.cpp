@@ -86,7 +86,9 @@ SimilarityScore similarity(const CoarseOccupancy& target_map, const CoarseOccupa
     const bool r_occ = reference_map.occupied(qx, qy);
     score.target_occupied += t_occ;
     score.reference_occupied += r_occ;
-    shared += (t_occ && reference_map.near_occupied(qx, qy)) + (r_occ && target_map.near_occupied(px, py));
+    const bool t_near = target_map.near_occupied(px, py), r_near = reference_map.near_occupied(qx, qy);
+    shared += (t_occ && r_near) + (r_occ && t_near);
+    score.conflicts += (t_occ && !r_near && reference_map.known(qx, qy)) + (r_occ && !t_near && target_map.known(px, py));
     if (!target_map.known(px, py) && reference_map.known(qx, qy)) ++score.new_known;
   }
   const int total = score.target_occupied + score.reference_occupied;

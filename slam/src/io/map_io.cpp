@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -110,6 +111,22 @@ ProbabilityMap read_map(const std::string& yaml_path) {
     }
   }
   return m;
+}
+
+OccupancyGrid to_occupancy_grid(const ProbabilityMap& map, GridOptions options) {
+  options.resolution = map.resolution;
+  OccupancyGrid grid(options);
+  for (int y = 0; y < map.height; ++y) {
+    for (int x = 0; x < map.width; ++x) {
+      const double p = map.at(x, y);
+      if (p < 0) continue;
+      const double q = std::clamp(p, 0.01, 0.99);
+      const CellIndex c = grid.cell_at(map.origin_x + (x + 0.5) * map.resolution,
+                                       map.origin_y + (y + 0.5) * map.resolution);
+      grid.add_log_odds(c, static_cast<int>(std::lround(1000.0 * std::log(q / (1.0 - q)))));
+    }
+  }
+  return grid;
 }
 
 }  // namespace lookahead::slam

@@ -36,9 +36,9 @@ cv::Mat render_occupancy(const ProbabilityMap& map, int scale) {
 }
 
 void draw_legend(cv::Mat& img, const std::vector<PicturePath>& paths,
-                 const std::vector<PicturePoints>& points, const std::string& title) {
+                 const std::vector<PicturePoints>& points, const std::string& title, bool start) {
   const int line_h = 18;
-  const int rows = static_cast<int>(paths.size() + points.size()) + 2;
+  const int rows = static_cast<int>(paths.size() + points.size()) + (start ? 2 : 1);
   cv::rectangle(img, cv::Rect(4, 4, 330, line_h * rows + 6), cv::Scalar(255, 255, 255), cv::FILLED);
   const auto text = [&](const std::string& t, int row) {
     cv::putText(img, t, {48, 4 + line_h * row}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
@@ -53,6 +53,7 @@ void draw_legend(cv::Mat& img, const std::vector<PicturePath>& paths,
     cv::circle(img, {25, 4 + line_h * row - 5}, 4, bgr(set.colour), cv::FILLED);
     text(set.label, row++);
   }
+  if (!start) return;
   cv::circle(img, {25, 4 + line_h * row - 5}, 5, cv::Scalar(40, 160, 40), cv::FILLED);
   text("start", row);
 }
@@ -69,18 +70,27 @@ BgrImage render_map_picture(const ProbabilityMap& map, const std::vector<Picture
                      static_cast<int>((map.height - (y - map.origin_y) / map.resolution) * scale));
   };
   for (const PicturePoints& set : points) {
-    for (const auto& [x, y] : set.points) cv::circle(img, to_px(x, y), set.radius, bgr(set.colour), cv::FILLED);
+    for (const auto& [x, y] : set.points) {
+      if (set.fill_cells) {
+        const int cx = static_cast<int>(std::floor((x - map.origin_x) / map.resolution));
+        const int cy = map.height - 1 - static_cast<int>(std::floor((y - map.origin_y) / map.resolution));
+        cv::rectangle(img, cv::Rect(cx * scale, cy * scale, scale, scale), bgr(set.colour), cv::FILLED);
+      } else {
+        cv::circle(img, to_px(x, y), set.radius, bgr(set.colour), cv::FILLED);
+      }
+    }
   }
   for (const PicturePath& path : paths) {
     std::vector<cv::Point> pts;
     for (const Pose2& p : path.poses) pts.push_back(to_px(p.x, p.y));
     if (pts.size() > 1) cv::polylines(img, pts, false, bgr(path.colour), path.thickness, cv::LINE_AA);
   }
-  if (!paths.empty() && !paths.front().poses.empty()) {
+  const bool start = !paths.empty() && paths.front().marks_start && !paths.front().poses.empty();
+  if (start) {
     const Pose2& s0 = paths.front().poses.front();
     cv::circle(img, to_px(s0.x, s0.y), 6, cv::Scalar(40, 160, 40), cv::FILLED);
   }
-  draw_legend(img, paths, points, title);
+  draw_legend(img, paths, points, title, start);
   BgrImage out;
   out.width = img.cols;
   out.height = img.rows;

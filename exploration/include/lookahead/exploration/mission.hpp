@@ -12,6 +12,7 @@
 
 #include "lookahead/exploration/frontier_detector.hpp"
 #include "lookahead/exploration/goal_blacklist.hpp"
+#include "lookahead/exploration/lookahead_mapping.hpp"
 #include "lookahead/exploration/mission_metrics.hpp"
 #include "lookahead/exploration/mission_options.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
@@ -40,6 +41,7 @@ struct MissionStatistics {
   int collisions = 0;
   int safety_stops = 0;  ///< steps the reactive stop held the robot
   std::size_t scans = 0, map_refreshes = 0;
+  bool ended_on_predictions = false;  ///< done because every frontier left was predicted
 };
 
 class Mission {
@@ -69,13 +71,17 @@ class Mission {
   [[nodiscard]] const planner::Path* current_path() const { return follower_ ? &follower_->path() : nullptr; }
   [[nodiscard]] const MissionStatistics& statistics() const { return stats_; }
   [[nodiscard]] const ReachableArea& reachable() const { return reachable_; }
+  [[nodiscard]] const CoverageMeter& coverage_meter() const { return meter_; }
   [[nodiscard]] const World& world() const { return world_; }
   [[nodiscard]] const MissionOptions& options() const { return options_; }
   [[nodiscard]] const slam::Pose2& start() const { return start_; }
   [[nodiscard]] const slam::Rbpf* slam() const { return rbpf_.get(); }
+  /// The look-ahead mapping (predictions), null when it is off.
+  [[nodiscard]] const LookaheadMapping* lookahead() const { return lookahead_.get(); }
 
  private:
   void sense();
+  void deliver_prediction();
   void refresh();
   void decide();
   void act();
@@ -97,6 +103,7 @@ class Mission {
   FrontierDetector frontiers_;
   GoalBlacklist blacklist_;
   std::unique_ptr<TargetStrategy> strategy_;
+  std::unique_ptr<LookaheadMapping> lookahead_;
   planner::Costmap costmap_;
   std::unique_ptr<planner::PathFollower> follower_;
   std::optional<planner::Point2> goal_;
@@ -110,6 +117,7 @@ class Mission {
   double best_goal_distance_ = 0.0, last_progress_time_ = 0.0;
   int unreachable_streak_ = 0;
   bool map_changed_ = false;
+  bool reselect_ = false;  ///< a new hypothesis arrived: choose the target again
   std::size_t last_resamplings_ = 0, last_best_ = 0;
   slam::Pose2 last_refresh_pose_;
   std::vector<slam::Pose2> true_path_, estimated_path_;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "lookahead/exploration/world.hpp"
@@ -18,6 +19,9 @@ class CoverageMeter {
  public:
   CoverageMeter(const World& world, const ReachableArea& area, double free_threshold);
   [[nodiscard]] double coverage(const slam::OccupancyGrid& map) const;  ///< in [0, 1]
+  /// Coverage counting also the samples `also_covered(x, y)` accepts (predicted free cells).
+  [[nodiscard]] double coverage(const slam::OccupancyGrid& map,
+                                const std::function<bool(double, double)>& also_covered) const;
   [[nodiscard]] std::size_t samples() const { return points_.size(); }
 
  private:

@@ -9,6 +9,7 @@
 #include "lookahead/exploration/frontier_detector.hpp"
 #include "lookahead/exploration/goal_blacklist.hpp"
 #include "lookahead/exploration/laser_simulator.hpp"
+#include "lookahead/exploration/lookahead_mapping.hpp"
 #include "lookahead/exploration/odometry_model.hpp"
 #include "lookahead/exploration/robot.hpp"
 #include "lookahead/planner/path_follower.hpp"
@@ -23,7 +24,7 @@ enum class PoseSource {
 };
 
 struct MissionOptions {
-  std::string strategy = "nearest";  ///< target selection: nearest | utility
+  std::string strategy = "nearest";  ///< target selection: nearest | utility | predictive
   double utility_lambda = 1.0;       ///< utility = gain [m^2] - lambda * cost [m]
   PoseSource pose_source = PoseSource::kSlam;
   std::uint64_t seed = 1;            ///< seeds the sensor, odometry, SLAM and planner
@@ -53,6 +54,7 @@ struct MissionOptions {
   LaserOptions laser;
   RobotOptions robot;
   OdometryNoiseOptions odometry;
+  LookaheadOptions lookahead;  ///< P-SLAM look-ahead mapping (predictions at each new target)
 
   /// The defaults above, with the dependent settings made consistent (robot radius and
   /// speed in the planner, follower and frontier options, 10 Hz updates of the RBPF...).

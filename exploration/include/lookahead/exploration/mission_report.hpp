@@ -7,6 +7,7 @@
 #include <string>
 
 #include "lookahead/exploration/mission.hpp"
+#include "lookahead/exploration/prediction_summary.hpp"
 
 namespace lookahead::exploration {
 
@@ -22,6 +23,7 @@ struct MissionSummary {
   double slam_position_error_final = 0.0;
   MissionStatistics statistics;
   double wall_time = 0.0, real_time_factor = 0.0;
+  PredictionSummary prediction;  ///< P-SLAM look-ahead mapping (enabled = false when off)
 };
 
 MissionSummary summarize(const Mission& mission, const std::string& world_name, double wall_time);

@@ -9,6 +9,7 @@
 
 #include "lookahead/exploration/frontier_detector.hpp"
 #include "lookahead/exploration/goal_blacklist.hpp"
+#include "lookahead/exploration/predicted_map.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
 #include "lookahead/planner/costmap.hpp"
 #include "lookahead/planner/plan.hpp"
@@ -31,6 +32,8 @@ struct Selection {
   int grid_fallbacks = 0;  ///< paths taken from the Dijkstra price when OMPL found none
   double planning_time = 0.0;  ///< [s], summed over the attempts
   std::size_t clusters = 0, candidates = 0;
+  /// kNoFrontier because the strategy skipped every reachable frontier as predicted.
+  bool rest_predicted = false;
 };
 
 struct SelectionInputs {
@@ -44,6 +47,9 @@ struct SelectionInputs {
   double sensor_range = 8.0;
   int max_attempts = 5;
   planner::PlannerOptions planner;
+  /// The look-ahead map, for strategies that use predictions (null: none).
+  const PredictedMap* predicted = nullptr;
+  double skip_confidence = 0.6;  ///< hypotheses below this Psi do not count for skipping
 };
 
 Selection select_target(const SelectionInputs& in);

@@ -18,6 +18,9 @@ struct Candidate {
   const FrontierCluster* cluster = nullptr;
   double path_cost = 0.0;         ///< travel distance from the robot to the goal [m]
   double information_gain = 0.0;  ///< unknown area within sensor range of the goal [m^2]
+  /// Share of the unknown cells beyond the frontier that confident hypotheses predict
+  /// (priced only for strategies that use predictions).
+  double predicted_share = 0.0;
 };
 
 class TargetStrategy {
@@ -26,6 +29,9 @@ class TargetStrategy {
   [[nodiscard]] virtual std::string name() const = 0;
   /// Index of the chosen candidate; nullopt when none is worth going to.
   [[nodiscard]] virtual std::optional<std::size_t> choose(const std::vector<Candidate>& candidates) const = 0;
+  /// True when candidates must be priced with the look-ahead map (predicted cells count as
+  /// known in the gain, predicted_share filled in).
+  [[nodiscard]] virtual bool uses_prediction() const { return false; }
 };
 
 /// The closest frontier by path cost (Yamauchi 1997).
@@ -47,7 +53,8 @@ class UtilityStrategy : public TargetStrategy {
   double lambda_;
 };
 
-/// "nearest" or "utility"; throws std::invalid_argument naming the choices otherwise.
-std::unique_ptr<TargetStrategy> make_strategy(const std::string& name);
+/// "nearest", "utility" (with `lambda`), "predictive" (nearest with P-SLAM skipping, see
+/// prediction_aware_strategy.hpp) or "predictive-utility"; throws std::invalid_argument naming the choices otherwise.
+std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double lambda = 1.0, double skip_share = 0.8);
 
 }  // namespace lookahead::exploration

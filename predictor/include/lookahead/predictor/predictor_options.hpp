@@ -34,6 +34,11 @@ struct PredictorOptions {
   /// A hypothesis must predict at least this much unexplored area [m^2]; a reference
   /// that explains only explored cells predicts nothing.
   double min_predicted_area = 1.0;
+  /// Beyond the paper: an alignment that puts more than this share of its walls on the
+  /// other map's explored free cells is rejected whatever its Psi (eq. 5 looks at occupied
+  /// cells only, so in a symmetric building a wall laid across a known corridor goes
+  /// unnoticed and the hypothesis fills a pillar with free space).
+  double max_conflict_share = 0.1;
   std::uint64_t seed = 1;  ///< of the random subset of reference corners
 };
 

@@ -48,6 +48,14 @@ struct SimilarityScore {
   int target_occupied = 0;    ///< sum J(S_f)
   int reference_occupied = 0; ///< sum J(C)
   int new_known = 0;          ///< samples unknown in the target but known in the reference
+  /// Walls of one map on cells the other has explored as free (no wall within the
+  /// tolerance): evidence against the alignment that eq. 5, counting occupied cells only,
+  /// cannot see.
+  int conflicts = 0;
+  [[nodiscard]] double conflict_share() const {
+    const int total = target_occupied + reference_occupied;
+    return total > 0 ? static_cast<double>(conflicts) / total : 0.0;
+  }
 };
 
 /// Psi between the target region (samples in the map frame) and the reference region

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "lookahead/predictor/map_features.hpp"
 #include "lookahead/predictor/predictor_options.hpp"
@@ -33,8 +34,16 @@ const char* to_string(Prediction::Status status);
 Prediction predict_structure(const slam::OccupancyGrid& map, double tx, double ty,
                              const PredictorOptions& options);
 
-/// The hypothesis of sec. III-C: within diameter d of the target, every cell unexplored in
-/// `map` whose aligned reference cell is explored takes that cell's occupancy.
+/// The unexplored region beyond the target frontier: unknown cells within diameter d of the
+/// target reachable from it through unknown cells (seeded within kSeedRadius of it). Our
+/// reading of "the unexplored parts in the target region" (sec. III-C): unknown cells
+/// sealed off by explored walls (behind an outer wall, inside a pillar) are not beyond
+/// this frontier, and a hypothesis there could never be checked by going to the target.
+constexpr double kSeedRadius = 1.0;  ///< [m]
+std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty, double diameter);
+
+/// The hypothesis of sec. III-C: every cell of the unexplored region whose aligned
+/// reference cell is explored takes that cell's occupancy.
 std::shared_ptr<slam::HypothesisMap> make_hypothesis(const slam::OccupancyGrid& map, double tx, double ty,
                                                      double diameter, const slam::Pose2& reference_to_target);
 

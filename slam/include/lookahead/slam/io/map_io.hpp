@@ -27,6 +27,10 @@ struct ProbabilityMap {
 /// Rasterises a grid over its known bounds (plus a margin in cells).
 ProbabilityMap to_probability_map(const OccupancyGrid& grid, int margin_cells = 10);
 
+/// The inverse: a grid (with `options`, its resolution replaced by the map's) holding each
+/// known pixel's probability as log-odds; unknown pixels stay unknown.
+OccupancyGrid to_occupancy_grid(const ProbabilityMap& map, GridOptions options = {});
+
 /// Writes DIR/NAME.pgm and DIR/NAME.yaml. Free 254, occupied 0, unknown 205 (map_server).
 void write_map(const ProbabilityMap& map, const std::string& dir, const std::string& name);
 /// Reads a map_server YAML (and the image it names) back; errors name the file and key.

@@ -21,6 +21,7 @@ struct PicturePath {
   Rgb colour;
   std::string label;
   int thickness = 2;
+  bool marks_start = true;  ///< the first path's first pose gets the start marker
 };
 
 struct PicturePoints {
@@ -28,6 +29,8 @@ struct PicturePoints {
   Rgb colour;
   std::string label;
   int radius = 2;  ///< [px]
+  /// Draw each point as the filled map cell it lies in, not a dot (predicted cells).
+  bool fill_cells = false;
 };
 
 /// An 8-bit BGR image in memory (row-major, top row first).
@@ -37,7 +40,7 @@ struct BgrImage {
 };
 
 /// Renders `map` with the paths and point sets drawn over it and a legend; the start of
-/// the first path gets a marker. `title` goes in the legend's first line. Small maps are
+/// the first path gets a marker unless it says otherwise. `title` goes in the legend's first line. Small maps are
 /// scaled up so cells stay visible.
 BgrImage render_map_picture(const ProbabilityMap& map, const std::vector<PicturePath>& paths,
                             const std::vector<PicturePoints>& points, const std::string& title);

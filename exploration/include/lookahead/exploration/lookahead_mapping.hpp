@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// Look-ahead mapping in a mission (Chang et al. 2007, Fig. 2 and 6): when the robot picks a
+// new target, the predictor works on the target's surroundings on its own thread; the
+// hypothesis joins the look-ahead map (and, with prediction on, the filter's weights).
+// Every prediction is recorded and checked against the true world.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lookahead/exploration/hypothesis_check.hpp"
+#include "lookahead/exploration/predicted_map.hpp"
+#include "lookahead/exploration/world.hpp"
+#include "lookahead/predictor/prediction_worker.hpp"
+
+namespace lookahead::exploration {
+
+struct LookaheadOptions {
+  /// Make predictions at each new target (implied by --predict and the predictive strategy).
+  bool enabled = false;
+  predictor::PredictorOptions predictor;
+  /// A prediction is delivered this long (simulated) after its request. The predictor runs
+  /// on its own thread; a fixed simulated latency keeps runs reproducible whatever the
+  /// machine's speed (the mission waits for the thread if it is slower) [s].
+  double latency = 1.0;
+  /// Predictive strategy: a frontier is skipped when at least `skip_share` of the unknown
+  /// cells beyond it are predicted by hypotheses with Psi >= `skip_confidence`.
+  double skip_confidence = 0.6;
+  double skip_share = 0.8;
+};
+
+struct PredictionRecord {
+  double time = 0.0;            ///< simulated time of the request [s]
+  double x = 0.0, y = 0.0;      ///< target [m]
+  std::string status;           ///< predictor::to_string(Prediction::Status)
+  double psi = 0.0;             ///< best Psi of the registration (0 without a control point)
+  double area = 0.0;            ///< predicted area [m^2]
+  double seconds = 0.0;         ///< wall time of the prediction
+  HypothesisCheck truth;        ///< of the hypothesis against the world (when predicted)
+};
+
+class LookaheadMapping {
+ public:
+  LookaheadMapping(const LookaheadOptions& options, const World& world, const slam::GridOptions& grid);
+
+  /// A new target: predict around (x, y) on a copy of `map` (copy-on-write: cheap).
+  void request(const slam::OccupancyGrid& map, double x, double y, double now);
+  /// The hypothesis of the pending request once its latency has passed (null otherwise, or
+  /// when no hypothesis cleared the threshold).
+  std::shared_ptr<const slam::HypothesisMap> deliver(double now);
+
+  [[nodiscard]] const PredictedMap& predicted() const { return predicted_; }
+  [[nodiscard]] const std::vector<PredictionRecord>& records() const { return records_; }
+  [[nodiscard]] const LookaheadOptions& options() const { return options_; }
+
+ private:
+  LookaheadOptions options_;
+  const World& world_;
+  predictor::PredictionWorker worker_;
+  PredictedMap predicted_;
+  std::vector<PredictionRecord> records_;
+  bool pending_ = false;
+  double due_ = 0.0;
+  PredictionRecord pending_record_;
+};
+
+}  // namespace lookahead::exploration

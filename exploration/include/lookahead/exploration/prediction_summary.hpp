@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// The P-SLAM figures of a finished mission: how many predictions were made and why the
+// others were not, how similar each hypothesis was to the true world (the paper's Fig. 10
+// measure), how much of the look-ahead map was right, and how often the filter used it.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "lookahead/exploration/mission.hpp"
+
+namespace lookahead::exploration {
+
+struct PredictionSummary {
+  bool enabled = false;
+  int requests = 0, hypotheses = 0, no_control_point = 0, no_match = 0;
+  std::vector<double> psi_world;     ///< per hypothesis: Psi against the true world
+  double mean_psi_world = 0.0;
+  double share_psi_world_above_04 = 0.0;
+  double predicted_area = 0.0;       ///< summed over hypotheses [m^2]
+  double cell_accuracy = 0.0;        ///< predicted cells whose class the world confirms
+  double mean_seconds = 0.0, max_seconds = 0.0;  ///< wall time per prediction
+  /// The look-ahead map at the end: cells predicted and still unexplored.
+  double final_predicted_area = 0.0;  ///< [m^2]
+  double final_predicted_accuracy = 0.0;
+  /// Coverage counting predicted free cells the world confirms as covered.
+  double coverage_with_predictions = 0.0;
+  bool ended_on_predictions = false;
+  std::size_t filter_hypotheses = 0, filter_predicted_updates = 0, filter_used = 0, filter_rejected = 0;
+};
+
+PredictionSummary summarize_predictions(const Mission& mission);
+
+}  // namespace lookahead::exploration
