@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "lookahead/predictor/slam_lookahead.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
@@ -36,6 +37,7 @@ struct SlamArgs {
   int threads = -1;
   std::size_t max_scans = 0;
   bool skip_bad_lines = false;
+  bool predict = false;
 };
 
 slam::RbpfOptions options_from(const SlamArgs& a) {
@@ -44,11 +46,19 @@ slam::RbpfOptions options_from(const SlamArgs& a) {
   if (a.particles >= 0) o.particles = a.particles;
   if (a.seed >= 0) o.seed = static_cast<std::uint64_t>(a.seed);
   if (a.threads >= 0) o.threads = a.threads;
+  if (a.predict) o.prediction.enabled = true;
   return o;
 }
 
+nlohmann::json prediction_json(const slam::RbpfStatistics& st, const predictor::SlamLookaheadStatistics& p) {
+  return {{"requests", p.requests}, {"hypotheses", p.hypotheses}, {"no_control_point", p.no_control_point},
+          {"no_match", p.no_match}, {"prediction_wall_time_s", p.seconds},
+          {"predicted_updates", st.predicted_updates}, {"used", st.prediction_used},
+          {"rejected_by_hit_ratio", st.prediction_rejected}};
+}
+
 void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbpf& filter,
-                   double wall_s) {
+                   double wall_s, const predictor::SlamLookahead* lookahead) {
   std::filesystem::create_directories(a.out);
   const auto& best = filter.particles()[filter.best_particle()];
   const slam::ProbabilityMap map = slam::to_probability_map(best.map);
@@ -85,6 +95,7 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   j["map_entropy_nats"] = h.total;
   j["map_observed_cells"] = h.observed;
   j["parameters_yaml"] = slam::dump_rbpf_options(filter.options());
+  if (lookahead) j["prediction"] = prediction_json(st, lookahead->statistics());
   std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
 }
 
@@ -102,16 +113,19 @@ int run_slam(const SlamArgs& a) {
   spdlog::info("{} scans, {} beams each; {} particles", log.scans.size(),
                log.scans.front().ranges.size(), options.particles);
   slam::Rbpf filter(options);
+  // P-SLAM: predictions of the region ahead enter the weights (off: plain RBPF, bit for bit).
+  std::unique_ptr<predictor::SlamLookahead> lookahead;
+  if (options.prediction.enabled) lookahead = std::make_unique<predictor::SlamLookahead>(predictor::PredictorOptions{}, predictor::SlamLookaheadOptions{});
   ProgressBar bar("slam", log.scans.size());
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < log.scans.size(); ++i) {
-    filter.add_scan(log.scans[i]);
+    if (filter.add_scan(log.scans[i]) && lookahead) lookahead->after_update(filter);
     const auto& neff = filter.statistics().neff;
     bar.update(i + 1, neff.empty() ? "" : fmt::format("Neff {:.0f}", neff.back()));
   }
   bar.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_outputs(a, log, filter, wall);
+  write_outputs(a, log, filter, wall, lookahead.get());
   spdlog::info("done in {:.1f} s ({:.1f}x real time), peak {:.0f} MB; wrote {}/map.png", wall,
                (log.scans.back().timestamp - log.scans.front().timestamp) / wall,
                peak_memory_mb(), a.out);
@@ -131,6 +145,7 @@ Run add_slam_command(CLI::App& app) {
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--max-scans", args->max_scans, "stop after this many scans (0 = all)");
   app.add_flag("--skip-bad-lines", args->skip_bad_lines, "count and skip malformed log lines");
+  app.add_flag("--predict", args->predict, "P-SLAM: predict the region ahead and use it in the weights");
   return [args] { return run_slam(*args); };
 }
 

@@ -118,8 +118,6 @@ void Mission::deliver_prediction() {
   if (!lookahead_) return;
   std::shared_ptr<const slam::HypothesisMap> h = lookahead_->deliver(time_);
   if (!h) return;
-  // Look-ahead: the target's surroundings may now be predicted well enough to skip it.
-  if (strategy_->uses_prediction()) reselect_ = true;
   if (rbpf_) rbpf_->add_hypothesis(std::move(h));  // ignored unless prediction is on
 }
 
@@ -161,8 +159,7 @@ bool Mission::goal_still_useful() const {
 
 void Mission::decide() {
   if (turned_ < options_.initial_turn || costmap_.empty()) return;
-  bool need = !follower_ || follower_->goal_reached() || reselect_;
-  reselect_ = false;
+  bool need = !follower_ || follower_->goal_reached();
   // A reached goal whose frontier is still there cannot be explored from there (a corner
   // the sensor cannot see from its goal): do not pick it again for a while.
   if (follower_ && follower_->goal_reached() && goal_) blacklist_.add(goal_->x, goal_->y, time_);
@@ -266,13 +263,28 @@ void Mission::record() {
   }
   if (time_ >= next_metrics_) {
     next_metrics_ = time_ + options_.metrics_period;
-    curve_.push_back({time_, path_length_, meter_.coverage(map())});
+    const double explored = meter_.coverage(map());
+    double with_predictions = explored;
+    if (lookahead_) {
+      const PredictedMap& pm = lookahead_->predicted();
+      const double occupied = options_.lookahead.predictor.features.occupied_threshold;
+      with_predictions = meter_.coverage(map(), [&](double x, double y) {
+        const slam::CellIndex c = pm.cells().cell_at(x, y);
+        return pm.predicted(map(), c) && pm.cells().probability(c) < occupied;
+      });
+    }
+    curve_.push_back({time_, path_length_, explored, with_predictions});
   }
 }
 
 void Mission::check_end() {
   if (status_ != MissionStatus::kRunning) return;
-  if (!curve_.empty() && curve_.back().coverage >= options_.coverage_goal) status_ = MissionStatus::kCoverageReached;
+  // Look-ahead mapping (a predictive strategy) counts predicted free space as mapped.
+  const bool predictive = lookahead_ && strategy_->uses_prediction();
+  const double mapped = curve_.empty() ? 0.0
+                        : predictive   ? curve_.back().coverage_with_predictions
+                                       : curve_.back().coverage;
+  if (mapped >= options_.coverage_goal) status_ = MissionStatus::kCoverageReached;
   else if (time_ >= options_.time_limit) status_ = MissionStatus::kTimeLimit;
 }
 

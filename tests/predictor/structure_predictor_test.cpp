@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "lookahead/predictor/prediction_worker.hpp"
+#include "lookahead/predictor/slam_lookahead.hpp"
+
+#include <algorithm>
 #include "square_maze_grid.hpp"
 
 namespace lookahead::predictor {
@@ -103,6 +106,54 @@ TEST(PredictionWorker, DeliversWhatTheSynchronousCallComputes) {
   EXPECT_DOUBLE_EQ(p->predicted_area, q.predicted_area);
   EXPECT_FALSE(worker.busy());
   EXPECT_FALSE(worker.poll().has_value());  // wait() handed it over
+}
+
+}  // namespace
+}  // namespace lookahead::predictor
+
+namespace lookahead::predictor {
+namespace {
+
+TEST(UnexploredRegion, StopsAtExploredWalls) {
+  // Explored: a free strip x in [0, 2], closed by a wall at x = 2 except a gap y in [2, 3].
+  // Beyond the wall the unknown side is reached through the gap; a sealed box is not.
+  slam::OccupancyGrid map;
+  for (double y = 0.025; y < 5; y += 0.05) {
+    for (double x = 0.025; x < 2; x += 0.05) {
+      const bool in_box = x > 0.55 && x < 1.45 && y > 0.55 && y < 1.45;  // never seen
+      if (!in_box) map.add_log_odds(map.cell_at(x, y), -1000);
+    }
+    if (y < 2 || y > 3) map.add_log_odds(map.cell_at(2.025, y), 3000);
+  }
+  for (double t = 0.025; t < 1; t += 0.05) {  // a sealed box at x, y in [0.5, 1.5]
+    for (const auto& [x, y] : {std::pair{0.5 + t, 0.5}, {0.5 + t, 1.5}, {0.5, 0.5 + t}, {1.5, 0.5 + t}}) {
+      map.add_log_odds(map.cell_at(x, y), 3000);
+    }
+  }
+  const std::vector<slam::CellIndex> region = unexplored_region(map, 1.9, 2.5, 8.0);
+  ASSERT_FALSE(region.empty());
+  for (const slam::CellIndex c : region) EXPECT_FALSE(map.is_known(c));
+  const auto contains = [&](double x, double y) {
+    const slam::CellIndex c = map.cell_at(x, y);
+    return std::find(region.begin(), region.end(), c) != region.end();
+  };
+  EXPECT_TRUE(contains(3.0, 2.5));   // through the gap
+  EXPECT_TRUE(contains(3.0, 0.5));   // beyond the wall, around through the gap
+  EXPECT_FALSE(contains(1.0, 1.0));  // inside the sealed box: unknown, but not beyond f
+}
+
+TEST(FrontierAhead, FindsTheNearestFrontierInTheHeadingCone) {
+  slam::OccupancyGrid map;
+  for (double y = -2; y < 2; y += 0.05)
+    for (double x = -3; x < 3; x += 0.05) map.add_log_odds(map.cell_at(x, y), -1000);
+  const auto ahead = frontier_ahead(map, {0, 0, 0}, 8.0, 0.5);
+  ASSERT_TRUE(ahead.has_value());
+  EXPECT_NEAR(ahead->first, 3.0, 0.1);   // the free area ends at x = 3 ahead
+  EXPECT_NEAR(ahead->second, 0.0, 1.6);
+  const auto behind = frontier_ahead(map, {0, 0, M_PI}, 8.0, 0.5);
+  ASSERT_TRUE(behind.has_value());
+  EXPECT_NEAR(behind->first, -3.0, 0.1);
+  EXPECT_FALSE(frontier_ahead(map, {0, 0, 0}, 2.0, 0.5).has_value());  // out of range
 }
 
 }  // namespace

@@ -117,7 +117,6 @@ class Mission {
   double best_goal_distance_ = 0.0, last_progress_time_ = 0.0;
   int unreachable_streak_ = 0;
   bool map_changed_ = false;
-  bool reselect_ = false;  ///< a new hypothesis arrived: choose the target again
   std::size_t last_resamplings_ = 0, last_best_ = 0;
   slam::Pose2 last_refresh_pose_;
   std::vector<slam::Pose2> true_path_, estimated_path_;

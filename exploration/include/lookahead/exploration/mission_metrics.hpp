@@ -33,6 +33,8 @@ struct CoverageSample {
   double time = 0.0;         ///< simulated [s]
   double path_length = 0.0;  ///< travelled [m]
   double coverage = 0.0;     ///< [0, 1]
+  /// With look-ahead mapping: explored or predicted free, as the robot believes it.
+  double coverage_with_predictions = 0.0;
 };
 
 struct Milestone {

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+// P-SLAM on a laser log (`lookahead slam --predict`): a log has no exploration goals, so the
+// target is the one a robot driving this way would pick next -- the frontier cell nearest
+// the robot within the sensor range and ahead of it (within `half_angle` of its heading).
+// Predictions run on the worker thread; each is handed to the filter a fixed number of
+// updates after its request, so a run is reproducible whatever the machine's speed.
+#pragma once
+
+#include <optional>
+#include <utility>
+
+#include "lookahead/predictor/prediction_worker.hpp"
+#include "lookahead/slam/rbpf/rbpf.hpp"
+
+namespace lookahead::predictor {
+
+struct SlamLookaheadOptions {
+  int period_updates = 10;   ///< a new target every this many filter updates
+  int latency_updates = 2;   ///< a prediction reaches the filter this many updates later
+  double range = 8.0;        ///< frontier cells up to this far from the robot [m]
+  double half_angle = 1.0;   ///< ... and within this of its heading [rad]
+};
+
+/// The frontier cell (free, with an unknown 4-neighbour) nearest to `pose` within the range
+/// and the heading cone; nullopt when there is none.
+std::optional<std::pair<double, double>> frontier_ahead(const slam::OccupancyGrid& map, const slam::Pose2& pose,
+                                                        double range, double half_angle, double free_threshold = 0.35);
+
+struct SlamLookaheadStatistics {
+  int requests = 0, hypotheses = 0, no_control_point = 0, no_match = 0;
+  double seconds = 0.0;  ///< wall time of all predictions (on the worker thread)
+};
+
+class SlamLookahead {
+ public:
+  SlamLookahead(const PredictorOptions& predictor, const SlamLookaheadOptions& options);
+  /// Call after each filter update: delivers a due hypothesis, requests a new one on time.
+  void after_update(slam::Rbpf& filter);
+  [[nodiscard]] const SlamLookaheadStatistics& statistics() const { return stats_; }
+
+ private:
+  SlamLookaheadOptions options_;
+  PredictionWorker worker_;
+  SlamLookaheadStatistics stats_;
+  int updates_ = 0, due_ = -1;
+};
+
+}  // namespace lookahead::predictor

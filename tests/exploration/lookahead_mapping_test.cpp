@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+// P-SLAM look-ahead mapping in missions: the predicted map validates itself as the robot
+// explores, the predictive strategy skips what is predicted and nothing else, hypotheses are
+// checked against the world, and a mission with predictions on makes and scores them.
+#include <gtest/gtest.h>
+
+#include "lookahead/exploration/generated_worlds.hpp"
+#include "lookahead/exploration/hypothesis_check.hpp"
+#include "lookahead/exploration/mission.hpp"
+#include "lookahead/exploration/mission_report.hpp"
+#include "lookahead/exploration/predicted_map.hpp"
+#include "lookahead/exploration/prediction_aware_strategy.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+slam::HypothesisMap hypothesis(double x0, double x1, double psi, int log_odds) {
+  slam::HypothesisMap h;
+  for (double y = 0.025; y < 1.0; y += 0.05)
+    for (double x = x0 + 0.025; x < x1; x += 0.05) h.grid.add_log_odds(h.grid.cell_at(x, y), log_odds);
+  h.similarity = psi;
+  return h;
+}
+
+TEST(PredictedMap, ExploredCellsLeaveThePrediction) {
+  PredictedMap pm;
+  pm.add(hypothesis(0.0, 2.0, 0.7, -1000));
+  slam::OccupancyGrid map;
+  const slam::CellIndex c = map.cell_at(0.5, 0.5);
+  EXPECT_TRUE(pm.predicted(map, c));
+  EXPECT_DOUBLE_EQ(pm.confidence(c), static_cast<double>(0.7f));
+  map.add_log_odds(c, -500);  // the robot has seen it now
+  EXPECT_FALSE(pm.predicted(map, c));
+  EXPECT_FALSE(pm.predicted(map, map.cell_at(3.0, 0.5)));  // never predicted
+}
+
+TEST(PredictedMap, TheMoreSimilarHypothesisWinsWhereTheyOverlap) {
+  PredictedMap pm;
+  pm.add(hypothesis(0.0, 2.0, 0.9, 2000));   // a wall, Psi 0.9
+  pm.add(hypothesis(1.0, 3.0, 0.6, -1000));  // free, Psi 0.6: loses on [1, 2]
+  const slam::OccupancyGrid map;
+  EXPECT_GT(pm.cells().probability(map.cell_at(1.5, 0.5)), 0.65);
+  EXPECT_LT(pm.cells().probability(map.cell_at(2.5, 0.5)), 0.35);
+  pm.add(hypothesis(0.0, 1.0, 0.95, -1000));  // a better one replaces the wall
+  EXPECT_LT(pm.cells().probability(map.cell_at(0.5, 0.5)), 0.35);
+  EXPECT_EQ(pm.hypotheses(), 3u);
+}
+
+TEST(PredictedMap, PredictedShareCountsTheUnknownSideOfAFrontier) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  for (int y = 0; y < 20; ++y) {  // a frontier along x = 0 facing +x (unknown at x >= 0.05)
+    const slam::CellIndex c{0, y};
+    map.add_log_odds(c, -1000);
+    map.add_log_odds({-1, y}, -1000);
+    cluster.cells.push_back(c);
+  }
+  PredictedMap pm;
+  EXPECT_DOUBLE_EQ(pm.predicted_share(map, cluster, 0.6), 0.0);
+  pm.add(hypothesis(0.05, 1.0, 0.7, -1000));  // covers y in [0, 1): all 20 cells' right side
+  EXPECT_GT(pm.predicted_share(map, cluster, 0.6), 0.6);  // right neighbours, not the ends
+  EXPECT_DOUBLE_EQ(pm.predicted_share(map, cluster, 0.8), 0.0);  // not confident enough
+}
+
+TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
+  const PredictionAwareStrategy s(make_strategy("nearest"), 0.9);
+  FrontierCluster a, b, c;
+  std::vector<Candidate> cands{{&a, 1.0, 5.0, 0.95}, {&b, 4.0, 5.0, 0.5}, {&c, 2.0, 5.0, 0.2}};
+  EXPECT_EQ(s.choose(cands), std::optional<std::size_t>(2));  // nearest of the unpredicted
+  cands[2].predicted_share = 0.9;
+  EXPECT_EQ(s.choose(cands), std::optional<std::size_t>(1));
+  cands[1].predicted_share = 1.0;
+  EXPECT_FALSE(s.choose(cands).has_value());  // everything predicted: nothing to drive to
+  EXPECT_TRUE(s.uses_prediction());
+  EXPECT_EQ(s.name(), "predictive");
+  EXPECT_EQ(make_strategy("predictive-utility")->name(), "predictive-utility");
+}
+
+TEST(HypothesisCheck, CountsCellsTheWorldConfirms) {
+  World world(100, 40, 0.05, {0, 0}, World::kFree);
+  world.fill_rect({0, 1.0}, {5.0, 1.1}, World::kOccupied);  // a wall along y = 1
+  slam::HypothesisMap h;
+  for (double x = 0.525; x < 2.5; x += 0.05) {  // away from the world's edge (a wall)
+    h.grid.add_log_odds(h.grid.cell_at(x, 1.025), 3000);  // the wall, right
+    h.grid.add_log_odds(h.grid.cell_at(x, 0.525), -1000); // free below it, right
+    h.grid.add_log_odds(h.grid.cell_at(x, 1.525), 3000);  // a wall that is not there
+  }
+  const HypothesisCheck c = check_against_world(h, world, 0.65);
+  EXPECT_EQ(c.cells, 120u);
+  EXPECT_EQ(c.correct, 80u);
+  EXPECT_NEAR(c.psi, 0.67, 0.05);  // half the predicted walls are real: 2 * 1 / (2 + 1)
+}
+
+TEST(LookaheadMission, PredictiveMazeRunChecksItsHypotheses) {
+  const GeneratedWorld maze = make_pslam_maze({});
+  MissionOptions o = MissionOptions::defaults();
+  o.pose_source = PoseSource::kTruth;
+  o.strategy = "predictive";
+  o.time_limit = 120;
+  o.harmonize();
+  Mission a(maze.world, maze.start, o);
+  a.run();
+  ASSERT_NE(a.lookahead(), nullptr);
+  const PredictionSummary s = summarize_predictions(a);
+  EXPECT_GT(s.requests, 3);
+  EXPECT_GT(s.hypotheses, 0);
+  EXPECT_GT(s.cell_accuracy, 0.8);  // the maze is regular: most predicted cells are right
+  EXPECT_EQ(a.statistics().collisions, 0);
+  EXPECT_EQ(static_cast<int>(a.lookahead()->records().size()), s.requests);
+}
+
+TEST(LookaheadMission, OffMeansNoPredictor) {
+  const GeneratedWorld maze = make_pslam_maze({});
+  MissionOptions o = MissionOptions::defaults();
+  o.pose_source = PoseSource::kTruth;
+  o.time_limit = 5;
+  o.harmonize();
+  Mission m(maze.world, maze.start, o);
+  m.run();
+  EXPECT_EQ(m.lookahead(), nullptr);
+  EXPECT_FALSE(summarize_predictions(m).enabled);
+}
+
+}  // namespace
+}  // namespace lookahead::exploration
