@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "lookahead/slam/eval/absolute_error.hpp"
+#include "lookahead/slam/eval/map_divergence.hpp"
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/eval/relative_error.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
@@ -15,7 +16,7 @@ namespace lookahead::app {
 namespace {
 
 struct EvalArgs {
-  std::string relations, reference_log, trajectory, map;
+  std::string relations, reference_log, trajectory, map, reference_map;
   double tolerance = 0.005;
   bool json = false;
 };
@@ -67,6 +68,14 @@ int run_eval(const EvalArgs& a) {
     j["map_entropy_nats"] = h.total;
     j["map_observed_cells"] = h.observed;
   }
+  if (!a.reference_map.empty()) {
+    if (a.map.empty()) throw std::runtime_error("eval: --reference-map needs --map");
+    const slam::MapDivergence d = slam::map_divergence(slam::read_map(a.reference_map), slam::read_map(a.map));
+    fmt::print("KL divergence from the reference map (eq. 24 of P-SLAM): {:.1f} nats over {} cells\n", d.total,
+               d.compared);
+    j["kl_divergence_nats"] = d.total;
+    j["kl_compared_cells"] = d.compared;
+  }
   if (a.json) fmt::print("{}\n", j.dump());
   return 0;
 }
@@ -80,6 +89,8 @@ Run add_eval_command(CLI::App& app) {
                  "corrected CARMEN log used as reference instead of relations (consecutive scans)");
   app.add_option("--trajectory", args->trajectory, "trajectory.txt written by `lookahead slam`");
   app.add_option("--map", args->map, "map .yaml (map_server) whose entropy to compute");
+  app.add_option("--reference-map", args->reference_map,
+                 "map .yaml taken as truth P: prints the KL divergence D(P || --map)");
   app.add_option("--tolerance", args->tolerance, "max stamp difference when matching poses [s]")
       ->capture_default_str();
   app.add_flag("--json", args->json, "also print the figures as one JSON line");

@@ -8,10 +8,18 @@ namespace lookahead::exploration {
 LookaheadMapping::LookaheadMapping(const LookaheadOptions& options, const World& world, const slam::GridOptions& grid)
     : options_(options), world_(world), worker_(options.predictor), predicted_(grid) {}
 
-void LookaheadMapping::request(const slam::OccupancyGrid& map, double x, double y, double now) {
-  // One prediction at a time: a target chosen while one runs replaces the queued one, and
-  // its record is the one kept.
-  worker_.request(map, x, y);
+void LookaheadMapping::request(const slam::OccupancyGrid& map, const std::vector<std::pair<double, double>>& targets,
+                               double now) {
+  queued_map_ = map;
+  queued_.assign(targets.rbegin(), targets.rend());  // popped from the back: first target first
+  if (!pending_) start_next(now);
+}
+
+void LookaheadMapping::start_next(double now) {
+  if (queued_.empty()) return;
+  const auto [x, y] = queued_.back();
+  queued_.pop_back();
+  worker_.request(queued_map_, x, y);
   pending_ = true;
   due_ = now + options_.latency;
   pending_record_ = PredictionRecord{now, x, y, "", 0.0, 0.0, 0.0, {}};
@@ -21,6 +29,7 @@ std::shared_ptr<const slam::HypothesisMap> LookaheadMapping::deliver(double now)
   if (!pending_ || now < due_) return nullptr;
   pending_ = false;
   const std::optional<predictor::Prediction> p = worker_.wait();
+  start_next(now);
   if (!p) return nullptr;
   PredictionRecord r = pending_record_;
   r.status = predictor::to_string(p->status);

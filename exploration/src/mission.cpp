@@ -3,6 +3,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lookahead/exploration/carmen_writer.hpp"
@@ -121,6 +122,23 @@ void Mission::deliver_prediction() {
   if (rbpf_) rbpf_->add_hypothesis(std::move(h));  // ignored unless prediction is on
 }
 
+std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x, double goal_y) const {
+  std::vector<std::pair<double, double>> targets{{goal_x, goal_y}};
+  const std::vector<FrontierCluster> clusters = frontiers_.clusters(map());
+  std::vector<std::pair<double, const FrontierCluster*>> others;
+  const slam::Pose2 p = estimate();
+  for (const FrontierCluster& f : clusters) {
+    if (!f.has_goal || std::hypot(f.goal_x - goal_x, f.goal_y - goal_y) < 1.0) continue;
+    others.push_back({std::hypot(f.goal_x - p.x, f.goal_y - p.y), &f});
+  }
+  std::sort(others.begin(), others.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [d, f] : others) {
+    if (static_cast<int>(targets.size()) >= options_.lookahead.targets_per_selection) break;
+    targets.push_back({f->goal_x, f->goal_y});
+  }
+  return targets;
+}
+
 void Mission::refresh() {
   if (!map_changed_) return;
   last_refresh_pose_ = robot_.pose();
@@ -209,7 +227,7 @@ void Mission::decide() {
     unreachable_streak_ = 0;
     goal_ = planner::Point2{s.goal_x, s.goal_y};
     // P-SLAM predicts the region around the next exploration goal (sec. II-A, step 1).
-    if (lookahead_) lookahead_->request(map(), s.goal_x, s.goal_y, time_);
+    if (lookahead_) lookahead_->request(map(), prediction_targets(s.goal_x, s.goal_y), time_);
     follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
     const slam::Pose2 p = estimate();
     best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);

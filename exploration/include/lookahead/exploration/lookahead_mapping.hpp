@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lookahead/exploration/hypothesis_check.hpp"
@@ -31,6 +32,10 @@ struct LookaheadOptions {
   /// predicted, and the time is saved by counting predicted space as mapped.
   double skip_confidence = 0.6;
   double skip_share = 1.0;
+  /// Frontiers predicted per target selection: the chosen target first, then the nearest
+  /// other frontier goals (the paper's extension "predict several possible targets",
+  /// sec. II-A). They queue on the worker, one delivered per latency period.
+  int targets_per_selection = 4;
 };
 
 struct PredictionRecord {
@@ -47,8 +52,9 @@ class LookaheadMapping {
  public:
   LookaheadMapping(const LookaheadOptions& options, const World& world, const slam::GridOptions& grid);
 
-  /// A new target: predict around (x, y) on a copy of `map` (copy-on-write: cheap).
-  void request(const slam::OccupancyGrid& map, double x, double y, double now);
+  /// A new selection: predict around each target in turn, on a copy of `map` (copy-on-write:
+  /// cheap). Targets still queued from the previous selection are dropped.
+  void request(const slam::OccupancyGrid& map, const std::vector<std::pair<double, double>>& targets, double now);
   /// The hypothesis of the pending request once its latency has passed (null otherwise, or
   /// when no hypothesis cleared the threshold).
   std::shared_ptr<const slam::HypothesisMap> deliver(double now);
@@ -63,7 +69,11 @@ class LookaheadMapping {
   predictor::PredictionWorker worker_;
   PredictedMap predicted_;
   std::vector<PredictionRecord> records_;
-  bool pending_ = false;
+  void start_next(double now);
+
+  slam::OccupancyGrid queued_map_;
+  std::vector<std::pair<double, double>> queued_;  ///< targets not started yet
+  bool pending_ = false;  ///< one is running on the worker
   double due_ = 0.0;
   PredictionRecord pending_record_;
 };

@@ -82,6 +82,7 @@ class Mission {
  private:
   void sense();
   void deliver_prediction();
+  std::vector<std::pair<double, double>> prediction_targets(double goal_x, double goal_y) const;
   void refresh();
   void decide();
   void act();
