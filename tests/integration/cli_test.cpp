@@ -109,3 +109,39 @@ TEST_F(Cli, ExploreRejectsBadWorldsAndStrategies) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST_F(Cli, PredictOnASavedMapWritesItsPictureAndFigures) {
+  const fs::path run = dir / "maze";
+  Result r = shell(bin + " explore --world maze --pose truth --time-limit 60 --no-animation --out " + run.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  r = shell(bin + " predict " + (run / "map.yaml").string() + " --target 2.5,5.0 --out " + dir.string());
+  ASSERT_TRUE(r.code == 0 || r.code == 3) << r.output;  // 3: no hypothesis cleared the threshold
+  EXPECT_TRUE(fs::exists(dir / "prediction.png"));
+  std::ifstream in(dir / "prediction.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_TRUE(j.contains("status"));
+  EXPECT_EQ(fs::exists(dir / "hypothesis.pgm"), r.code == 0);
+  r = shell(bin + " predict " + (run / "map.pgm").string() + " --target 2.5,5.0 --out " + dir.string());
+  EXPECT_TRUE(r.code == 0 || r.code == 3) << r.output;  // the PGM finds its YAML beside it
+}
+
+TEST_F(Cli, PredictRejectsMissingMapsAndBadTargets) {
+  Result r = shell(bin + " predict " + (dir / "none.pgm").string() + " --target 1,2");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("none"), std::string::npos) << r.output;
+  r = shell(bin + " predict " + (dir / "none.yaml").string() + " --target 1");
+  EXPECT_NE(r.code, 0);
+}
+
+TEST_F(Cli, SlamWithPredictReportsItsPredictions) {
+  const Result r = shell(bin + " slam --predict --particles 5 --max-scans 400 --out " + dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream in(dir / "run.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  ASSERT_TRUE(j.contains("prediction"));
+  EXPECT_GT(j["prediction"]["requests"].get<int>(), 0);
+}
+
+}  // namespace
