@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/segslam/grid_submap_ops.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "lookahead/slam/grid/grid_tile.hpp"
+#include "lookahead/slam/segslam/submap_choice.hpp"
+
+namespace lookahead::slam::segslam {
+namespace {
+
+PreparedScan as_scan(const Points2& cloud) {
+  PreparedScan s;  // laser offset identity: the points are in the robot frame already
+  for (const auto& p : cloud) {
+    s.x.push_back(static_cast<float>(p.x()));
+    s.y.push_back(static_cast<float>(p.y()));
+  }
+  return s;
+}
+
+// Obstacle cells of `map` within `range` of (x, y), as points in the map's frame.
+Points2 obstacle_points(const OccupancyGrid& map, double x, double y, double range) {
+  Points2 out;
+  const CellIndex lo = map.cell_at(x - range, y - range), hi = map.cell_at(x + range, y + range);
+  for (int ty = lo.y >> GridTile::kBits; ty <= hi.y >> GridTile::kBits; ++ty) {
+    for (int tx = lo.x >> GridTile::kBits; tx <= hi.x >> GridTile::kBits; ++tx) {
+      const GridTile* t = map.tile(tx, ty);
+      if (!t) continue;
+      for (int i = 0; i < GridTile::kCells; ++i) {
+        if (!(t->flags[static_cast<std::size_t>(i)] & GridTile::kObstacle)) continue;
+        const CellIndex c{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)};
+        double cx, cy;
+        map.cell_center(c, cx, cy);
+        if (std::hypot(cx - x, cy - y) <= range) out.emplace_back(cx, cy);
+      }
+    }
+  }
+  return out;
+}
+
+// The pose near `guess` where most window points land on the candidate's obstacles.
+Pose2 coarse_search(const OccupancyGrid& map, const PreparedScan& cloud, const Pose2& guess,
+                    const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
+  const double step = std::max(0.1, 2 * o.bin_size);
+  const double angle_step = 0.035;
+  const int n = static_cast<int>(o.search_radius / step);
+  const int na = static_cast<int>(o.search_angle / angle_step);
+  Pose2 best = guess;
+  double best_score = likelihood.hit_ratio(map, guess, cloud);
+  for (int a = -na; a <= na; ++a) {
+    for (int i = -n; i <= n; ++i) {
+      for (int j = -n; j <= n; ++j) {
+        const Pose2 p{guess.x + i * step, guess.y + j * step, normalize_angle(guess.theta + a * angle_step)};
+        const double s = likelihood.hit_ratio(map, p, cloud);
+        if (s > best_score) best_score = s, best = p;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+double predictive_score(const OccupancyGrid& map, const Pose2& pose, const LookaheadWindow& w,
+                        const LikelihoodFieldModel& likelihood) {
+  if (w.scans.empty()) return -1.0;
+  double sum = 0;
+  for (std::size_t i = 0; i < w.scans.size(); ++i) {
+    sum += likelihood.hit_ratio(map, pose.compose(w.relative_poses[i]), w.scans[i]);
+  }
+  return sum / static_cast<double>(w.scans.size());
+}
+
+bool has_observed_near(const OccupancyGrid& map, double x, double y, double radius) {
+  const double step = std::max(map.resolution(), radius / 4);
+  for (double dx = -radius; dx <= radius; dx += step) {
+    for (double dy = -radius; dy <= radius; dy += step) {
+      if (map.is_known(map.cell_at(x + dx, y + dy))) return true;
+    }
+  }
+  return false;
+}
+
+WindowMatch match_window(const OccupancyGrid& candidate, const LookaheadWindow& window,
+                         const Pose2& guess, const MatchingOptions& o,
+                         const LikelihoodFieldModel& likelihood) {
+  WindowMatch m;
+  const Points2 target = bin_points(obstacle_points(candidate, guess.x, guess.y, o.candidate_range), o.bin_size);
+  if (target.size() < 10 || window.cloud.size() < 10) return m;
+  const Pose2 seed = coarse_search(candidate, as_scan(window.cloud), guess, o, likelihood);
+  const IcpResult icp = icp_binned(window.cloud, target, seed, {o.icp_iterations, o.icp_max_distance, o.bin_size});
+  m.pose = icp.transform;
+  m.icp_error = icp.mean_error;
+  m.translation = std::hypot(m.pose.x - guess.x, m.pose.y - guess.y);
+  m.ok = icp.inlier_ratio >= o.min_inlier_ratio;
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
+  return m;
+}
+
+void MapCanvas::paste(const OccupancyGrid& map, const Pose2& frame, const OccupancyGrid* parent) {
+  CellIndex lo, hi;
+  if (!map.known_bounds(lo, hi)) return;
+  const double scale = 1.0 / GridTile::kLogOddsScale;
+  const double c = std::cos(frame.theta), s = std::sin(frame.theta);
+  // Rotated cells alias: average the cells of this submap that land in one target cell, so
+  // the pasted evidence is not doubled (the sum across submaps is the independence model).
+  std::map<std::pair<int, int>, std::pair<double, int>> mine;
+  for (int ty = lo.y >> GridTile::kBits; ty <= hi.y >> GridTile::kBits; ++ty) {
+    for (int tx = lo.x >> GridTile::kBits; tx <= hi.x >> GridTile::kBits; ++tx) {
+      const GridTile* t = map.tile(tx, ty);
+      if (!t) continue;
+      const GridTile* shared = parent ? parent->tile(tx, ty) : nullptr;
+      if (shared == t) continue;  // copy-on-write: an untouched tile is the parent's evidence
+      for (int i = 0; i < GridTile::kCells; ++i) {
+        const auto l = t->log_odds[static_cast<std::size_t>(i)];
+        if (l == GridTile::kUnknown) continue;
+        const auto pl = shared ? shared->log_odds[static_cast<std::size_t>(i)] : GridTile::kUnknown;
+        const double delta = (l - (pl == GridTile::kUnknown ? 0 : pl)) * scale;
+        const CellIndex cell{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)};
+        double x, y;
+        map.cell_center(cell, x, y);
+        const double wx = frame.x + c * x - s * y, wy = frame.y + s * x + c * y;
+        auto& [sum, n] = mine[{static_cast<int>(std::floor(wx / resolution_)), static_cast<int>(std::floor(wy / resolution_))}];
+        sum += delta;
+        ++n;
+      }
+    }
+  }
+  for (const auto& [k, sn] : mine) cells_.push_back({{k.first, k.second}, sn.first / sn.second});
+}
+
+ProbabilityMap MapCanvas::to_probability_map() const {
+  ProbabilityMap m;
+  m.resolution = resolution_;
+  if (cells_.empty()) return m;
+  std::map<std::pair<int, int>, double> sum;  // ordered: deterministic output
+  for (const auto& [cell, l] : cells_) sum[{cell.x, cell.y}] += l;
+  int x0 = sum.begin()->first.first, x1 = x0, y0 = sum.begin()->first.second, y1 = y0;
+  for (const auto& [k, l] : sum) {
+    x0 = std::min(x0, k.first), x1 = std::max(x1, k.first);
+    y0 = std::min(y0, k.second), y1 = std::max(y1, k.second);
+  }
+  m.width = x1 - x0 + 1;
+  m.height = y1 - y0 + 1;
+  m.origin_x = x0 * resolution_;
+  m.origin_y = y0 * resolution_;
+  m.p.assign(static_cast<std::size_t>(m.width) * static_cast<std::size_t>(m.height), -1.0);
+  for (const auto& [k, l] : sum) {
+    m.p[static_cast<std::size_t>((k.second - y0) * m.width + (k.first - x0))] = 1.0 - 1.0 / (1.0 + std::exp(l));
+  }
+  return m;
+}
+
+}  // namespace lookahead::slam::segslam
