@@ -29,10 +29,9 @@ void visit_sections(SegSlamOptions& o, V&& v) {
   v("period_updates", m.period_updates, "try matching every n updates");
   v("sample_submaps", m.sample_submaps, "submaps in a local metric map sample");
   v("min_separation_s", m.min_separation_s, "candidate must have ended this long ago [s]");
-  v("proximity_radius", m.proximity_radius, "candidate needs observed cells this near [m]");
+  v("proximity_radius", m.proximity_radius, "robot must be this near the candidate's path [m]");
   v("max_candidates", m.max_candidates, "candidates matched per attempt");
   v("bin_size", m.bin_size, "ICP point bins [m]");
-  v("candidate_range", m.candidate_range, "candidate points within this range [m]");
   v("search_radius", m.search_radius, "coarse search before ICP, translation [m]");
   v("search_angle", m.search_angle, "coarse search before ICP, rotation [rad]");
   v("icp_iterations", m.icp_iterations, "ICP iterations");

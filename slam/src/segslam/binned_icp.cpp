@@ -6,7 +6,8 @@
 #include <cstdint>
 #include <unordered_map>
 
-#include <Eigen/SVD>
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 
 namespace lookahead::slam::segslam {
 namespace {
@@ -20,8 +21,23 @@ std::int64_t bin_key(double x, double y, double bin) {
 // The target's points hashed by bin, for neighbour queries within max_distance.
 class BinIndex {
  public:
-  BinIndex(const Points2& points, double cell) : points_(points), cell_(cell) {
-    for (std::size_t i = 0; i < points.size(); ++i) bins_[bin_key(points[i].x(), points[i].y(), cell_)].push_back(i);
+  BinIndex(Points2 points, double cell) : points_(std::move(points)), cell_(cell) {
+    for (std::size_t i = 0; i < points_.size(); ++i) bins_[bin_key(points_[i].x(), points_[i].y(), cell_)].push_back(i);
+  }
+  /// Indices of the points within `radius` of q.
+  std::vector<std::size_t> within(const Eigen::Vector2d& q, double radius) const {
+    const int reach = static_cast<int>(std::ceil(radius / cell_));
+    std::vector<std::size_t> out;
+    for (int dx = -reach; dx <= reach; ++dx) {
+      for (int dy = -reach; dy <= reach; ++dy) {
+        const auto it = bins_.find(bin_key(q.x() + dx * cell_, q.y() + dy * cell_, cell_));
+        if (it == bins_.end()) continue;
+        for (std::size_t i : it->second) {
+          if ((points_[i] - q).norm() <= radius) out.push_back(i);
+        }
+      }
+    }
+    return out;
   }
   /// Index of the nearest point within `max_d`, or -1.
   long nearest(const Eigen::Vector2d& q, double max_d) const {
@@ -40,9 +56,10 @@ class BinIndex {
     }
     return best;
   }
+  [[nodiscard]] const Points2& points() const { return points_; }
 
  private:
-  const Points2& points_;
+  Points2 points_;
   double cell_;
   std::unordered_map<std::int64_t, std::vector<std::size_t>> bins_;
 };
@@ -69,37 +86,86 @@ Points2 bin_points(const Points2& points, double bin) {
   return out;
 }
 
-IcpResult icp_binned(const Points2& source, const Points2& target, const Pose2& guess,
+namespace {
+
+// Unit normal of the target around each point, from the points within `radius` (the
+// direction of least spread); zero where there are too few to tell.
+std::vector<Eigen::Vector2d> normals_of(const Points2& target, const BinIndex& index, double radius) {
+  std::vector<Eigen::Vector2d> normals(target.size(), Eigen::Vector2d::Zero());
+  for (std::size_t i = 0; i < target.size(); ++i) {
+    const std::vector<std::size_t> near = index.within(target[i], radius);
+    if (near.size() < 3) continue;
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    for (std::size_t j : near) mean += target[j];
+    mean /= static_cast<double>(near.size());
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    for (std::size_t j : near) cov += (target[j] - mean) * (target[j] - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+    normals[i] = eig.eigenvectors().col(0);  // eigenvalues ascending
+  }
+  return normals;
+}
+
+}  // namespace
+
+struct IcpTarget::Data {
+  BinIndex index;
+  std::vector<Eigen::Vector2d> normals;
+};
+
+IcpTarget::IcpTarget(Points2 points, const IcpOptions& o)
+    : data_(std::make_unique<Data>(Data{BinIndex(std::move(points), std::max(o.bin, o.max_distance / 2)), {}})) {
+  data_->normals = normals_of(data_->index.points(), data_->index, 2.5 * o.bin);
+}
+IcpTarget::~IcpTarget() = default;
+IcpTarget::IcpTarget(IcpTarget&&) noexcept = default;
+IcpTarget& IcpTarget::operator=(IcpTarget&&) noexcept = default;
+std::size_t IcpTarget::size() const { return data_->index.points().size(); }
+
+IcpResult icp_binned(const Points2& source, const Points2& target, const Pose2& guess, const IcpOptions& o) {
+  return icp_binned(source, IcpTarget(target, o), guess, o);
+}
+
+IcpResult icp_binned(const Points2& source, const IcpTarget& prepared, const Pose2& guess,
                      const IcpOptions& o) {
   IcpResult r;
   r.transform = guess;
+  const BinIndex& index = prepared.data_->index;
+  const Points2& target = index.points();
+  const std::vector<Eigen::Vector2d>& normals = prepared.data_->normals;
   if (source.empty() || target.empty()) return r;
-  const BinIndex index(target, std::max(o.bin, o.max_distance / 2));
+  // Deviation: point-to-line, not point-to-point. With one point per bin, point-to-point ICP
+  // stalls up to half a bin off along walls (a neighbour bin is never nearer); the
+  // distance to the wall through the nearest bin has no such dead zone.
   for (r.iterations = 0; r.iterations < o.iterations; ++r.iterations) {
-    // Closed-form rigid alignment of the current pairs (Arun et al. 1987, 2D).
-    Eigen::Vector2d ms = Eigen::Vector2d::Zero(), mt = Eigen::Vector2d::Zero();
-    std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> pairs;
+    // Gauss-Newton on sum (n . (T p - q))^2 for a small step (dx, dy, dtheta) after T.
+    Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d g = Eigen::Vector3d::Zero();
+    int pairs = 0;
     for (const auto& p : source) {
-      const Eigen::Vector2d q = apply(r.transform, p);
-      const long j = index.nearest(q, o.max_distance);
-      if (j >= 0) pairs.push_back({q, target[static_cast<std::size_t>(j)]});
+      const Eigen::Vector2d a = apply(r.transform, p);
+      const long j = index.nearest(a, o.max_distance);
+      if (j < 0) continue;
+      const auto k = static_cast<std::size_t>(j);
+      const Eigen::Vector2d d = a - target[k];
+      auto add = [&](const Eigen::Vector2d& n) {
+        const Eigen::Vector3d jac(n.x(), n.y(), a.x() * n.y() - a.y() * n.x());
+        h += jac * jac.transpose();
+        g += jac * n.dot(d);
+      };
+      if (normals[k].squaredNorm() > 0) {
+        add(normals[k]);
+      } else {
+        add({1, 0});
+        add({0, 1});
+      }
+      ++pairs;
     }
-    if (pairs.size() < 3) break;
-    for (const auto& [a, b] : pairs) ms += a, mt += b;
-    ms /= static_cast<double>(pairs.size());
-    mt /= static_cast<double>(pairs.size());
-    double sxx = 0, sxy = 0;
-    for (const auto& [a, b] : pairs) {
-      const Eigen::Vector2d da = a - ms, db = b - mt;
-      sxx += da.x() * db.x() + da.y() * db.y();
-      sxy += da.x() * db.y() - da.y() * db.x();
-    }
-    const double dth = std::atan2(sxy, sxx);
-    const double c = std::cos(dth), s = std::sin(dth);
-    const Eigen::Vector2d shift = mt - Eigen::Vector2d(c * ms.x() - s * ms.y(), s * ms.x() + c * ms.y());
-    const Pose2 step{shift.x(), shift.y(), dth};
-    r.transform = step.compose(r.transform);
-    if (shift.norm() < 1e-4 && std::abs(dth) < 1e-5) break;
+    if (pairs < 3) break;
+    const Eigen::Vector3d delta = h.ldlt().solve(-g);
+    if (!delta.allFinite()) break;
+    r.transform = Pose2{delta.x(), delta.y(), delta.z()}.compose(r.transform);
+    if (delta.head<2>().norm() < 1e-5 && std::abs(delta.z()) < 1e-6) break;
   }
   double sum = 0;
   std::size_t inliers = 0;
@@ -107,7 +173,9 @@ IcpResult icp_binned(const Points2& source, const Points2& target, const Pose2& 
     const Eigen::Vector2d q = apply(r.transform, p);
     const long j = index.nearest(q, o.max_distance);
     if (j < 0) continue;
-    sum += (target[static_cast<std::size_t>(j)] - q).norm();
+    const auto k = static_cast<std::size_t>(j);
+    const Eigen::Vector2d d = q - target[k];
+    sum += normals[k].squaredNorm() > 0 ? std::abs(normals[k].dot(d)) : d.norm();
     ++inliers;
   }
   r.inlier_ratio = static_cast<double>(inliers) / static_cast<double>(source.size());

@@ -20,45 +20,94 @@ PreparedScan as_scan(const Points2& cloud) {
   return s;
 }
 
-// Obstacle cells of `map` within `range` of (x, y), as points in the map's frame.
-Points2 obstacle_points(const OccupancyGrid& map, double x, double y, double range) {
+// Every obstacle cell of `map`, as a point in the map's frame.
+Points2 obstacle_points(const OccupancyGrid& map) {
   Points2 out;
-  const CellIndex lo = map.cell_at(x - range, y - range), hi = map.cell_at(x + range, y + range);
+  CellIndex lo, hi;
+  if (!map.known_bounds(lo, hi)) return out;
   for (int ty = lo.y >> GridTile::kBits; ty <= hi.y >> GridTile::kBits; ++ty) {
     for (int tx = lo.x >> GridTile::kBits; tx <= hi.x >> GridTile::kBits; ++tx) {
       const GridTile* t = map.tile(tx, ty);
       if (!t) continue;
       for (int i = 0; i < GridTile::kCells; ++i) {
         if (!(t->flags[static_cast<std::size_t>(i)] & GridTile::kObstacle)) continue;
-        const CellIndex c{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)};
         double cx, cy;
-        map.cell_center(c, cx, cy);
-        if (std::hypot(cx - x, cy - y) <= range) out.emplace_back(cx, cy);
+        map.cell_center({(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)}, cx, cy);
+        out.emplace_back(cx, cy);
       }
     }
   }
   return out;
 }
 
-// The pose near `guess` where most window points land on the candidate's obstacles.
-Pose2 coarse_search(const OccupancyGrid& map, const PreparedScan& cloud, const Pose2& guess,
-                    const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
-  const double step = std::max(0.1, 2 * o.bin_size);
-  const double angle_step = 0.035;
-  const int n = static_cast<int>(o.search_radius / step);
-  const int na = static_cast<int>(o.search_angle / angle_step);
-  Pose2 best = guess;
-  double best_score = likelihood.hit_ratio(map, guess, cloud);
+// Share of `points` (robot frame, already rotated by the heading) that land within the
+// distance-field radius of an obstacle when the robot stands at (x, y): a wide, smooth
+// score for a coarse grid of poses. The innermost loop of matching: no calls, no trig.
+double near_obstacle_share(const OccupancyGrid& map, double x, double y, const Points2& rotated) {
+  const double inv = 1.0 / map.resolution();
+  int near = 0;
+  for (const auto& p : rotated) {
+    const CellIndex cell{static_cast<int>(std::floor((x + p.x()) * inv)), static_cast<int>(std::floor((y + p.y()) * inv))};
+    if (map.dist2(cell) < GridTile::kFar) ++near;
+  }
+  return rotated.empty() ? 0.0 : static_cast<double>(near) / static_cast<double>(rotated.size());
+}
+
+// The best pose of a grid around `centre` by near_obstacle_share (points rotated once per
+// heading).
+Pose2 coarse_grid_search(const OccupancyGrid& map, const Points2& points, const Pose2& centre, double radius,
+                         double step, double angle, double angle_step) {
+  const int n = static_cast<int>(radius / step), na = static_cast<int>(angle / angle_step);
+  Pose2 best = centre;
+  double best_score = -1.0;
+  Points2 rotated(points.size());
   for (int a = -na; a <= na; ++a) {
+    const double th = normalize_angle(centre.theta + a * angle_step), c = std::cos(th), s = std::sin(th);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      rotated[k] = {c * points[k].x() - s * points[k].y(), s * points[k].x() + c * points[k].y()};
+    }
     for (int i = -n; i <= n; ++i) {
       for (int j = -n; j <= n; ++j) {
-        const Pose2 p{guess.x + i * step, guess.y + j * step, normalize_angle(guess.theta + a * angle_step)};
-        const double s = likelihood.hit_ratio(map, p, cloud);
-        if (s > best_score) best_score = s, best = p;
+        const double v = near_obstacle_share(map, centre.x + i * step, centre.y + j * step, rotated);
+        if (v > best_score) best_score = v, best = {centre.x + i * step, centre.y + j * step, th};
       }
     }
   }
   return best;
+}
+
+// Exhaustive search of a pose grid around `centre` for the best score.
+template <typename Score>
+Pose2 grid_search(const Pose2& centre, double radius, double step, double angle, double angle_step, Score&& score) {
+  const int n = static_cast<int>(radius / step), na = static_cast<int>(angle / angle_step);
+  Pose2 best = centre;
+  double best_score = score(centre);
+  for (int a = -na; a <= na; ++a) {
+    for (int i = -n; i <= n; ++i) {
+      for (int j = -n; j <= n; ++j) {
+        const Pose2 p{centre.x + i * step, centre.y + j * step, normalize_angle(centre.theta + a * angle_step)};
+        const double v = score(p);
+        if (v > best_score) best_score = v, best = p;
+      }
+    }
+  }
+  return best;
+}
+
+// The pose near `guess` where most window points land on the candidate's obstacles: a coarse
+// grid on a thinned cloud scored by the wide near-obstacle share, then a fine grid scored by
+// hits within the sensor model's hit distance.
+Pose2 coarse_search(const OccupancyGrid& map, const Points2& cloud, const Pose2& guess,
+                    const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
+  Points2 thin;
+  const std::size_t every = std::max<std::size_t>(1, cloud.size() / 60);
+  for (std::size_t i = 0; i < cloud.size(); i += every) thin.push_back(cloud[i]);
+  // The near-obstacle share is flat within the field radius: steps of most of it miss no peak.
+  const double step = std::max(0.8 * map.distance_radius_cells() * map.resolution(), o.bin_size);
+  const Pose2 coarse = coarse_grid_search(map, thin, guess, o.search_radius, step, o.search_angle, 0.05);
+  const PreparedScan scan = as_scan(cloud);
+  return grid_search(coarse, step, step / 4, 0.05, 0.0125,
+                     [&](const Pose2& p) { return likelihood.hit_ratio(map, p, scan); });
 }
 
 }  // namespace
@@ -83,13 +132,15 @@ bool has_observed_near(const OccupancyGrid& map, double x, double y, double radi
   return false;
 }
 
-WindowMatch match_window(const OccupancyGrid& candidate, const LookaheadWindow& window,
-                         const Pose2& guess, const MatchingOptions& o,
-                         const LikelihoodFieldModel& likelihood) {
+IcpTarget icp_target_of(const OccupancyGrid& map, const MatchingOptions& o) {
+  return IcpTarget(bin_points(obstacle_points(map), o.bin_size), {o.icp_iterations, o.icp_max_distance, o.bin_size});
+}
+
+WindowMatch match_window(const OccupancyGrid& candidate, const IcpTarget& target, const LookaheadWindow& window,
+                         const Pose2& guess, const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
   WindowMatch m;
-  const Points2 target = bin_points(obstacle_points(candidate, guess.x, guess.y, o.candidate_range), o.bin_size);
   if (target.size() < 10 || window.cloud.size() < 10) return m;
-  const Pose2 seed = coarse_search(candidate, as_scan(window.cloud), guess, o, likelihood);
+  const Pose2 seed = coarse_search(candidate, window.cloud, guess, o, likelihood);
   const IcpResult icp = icp_binned(window.cloud, target, seed, {o.icp_iterations, o.icp_max_distance, o.bin_size});
   m.pose = icp.transform;
   m.icp_error = icp.mean_error;
@@ -148,7 +199,7 @@ ProbabilityMap MapCanvas::to_probability_map() const {
   m.origin_y = y0 * resolution_;
   m.p.assign(static_cast<std::size_t>(m.width) * static_cast<std::size_t>(m.height), -1.0);
   for (const auto& [k, l] : sum) {
-    m.p[static_cast<std::size_t>((k.second - y0) * m.width + (k.first - x0))] = 1.0 - 1.0 / (1.0 + std::exp(l));
+    m.p[static_cast<std::size_t>((k.second - y0) * m.width + (k.first - x0))] = 1.0 - 1.0 / (1.0 + std::exp(std::clamp(l, min_, max_)));
   }
   return m;
 }

@@ -29,7 +29,8 @@ MapSample sample_full_map(const SegSlam& filter, std::size_t particle, std::mt19
     for (auto& p : s.placed) p.frame = to_world.compose(p.frame);
     break;
   }
-  MapCanvas canvas(filter.rbpf_options().grid.resolution);
+  const GridOptions& grid = filter.rbpf_options().grid;
+  MapCanvas canvas(grid.resolution, grid.log_odds_min, grid.log_odds_max);
   for (std::size_t i = 0; i < s.placed.size(); ++i) {
     const GridSubmap& m = submap_of(i);
     const GridSubmap* parent = nullptr;

@@ -147,15 +147,44 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
   if (candidates.size() > static_cast<std::size_t>(o.max_candidates)) candidates.resize(static_cast<std::size_t>(o.max_candidates));
   std::vector<WindowMatch> out;
   for (const Candidate& c : candidates) {
-    WindowMatch m = match_window(segmap_.at(c.id).map, w, c.guess, o, likelihood_);
-#pragma omp atomic
-    ++stats_.match_attempts;
+    WindowMatch m = cached_match(c.id, c.guess, w);
     if (std::getenv("SEGSLAM_DEBUG")) std::fprintf(stderr, "scan %zu cand %zu [%zu-%zu] d %.2f guess %.2f %.2f %.2f -> %.2f %.2f %.2f err %.3f tau %.2f ok %d w %.3f cloud %zu\n", last_update_, c.id, segmap_.at(c.id).interval.first_scan, segmap_.at(c.id).interval.last_scan, c.distance, c.guess.x, c.guess.y, c.guess.theta, m.pose.x, m.pose.y, m.pose.theta, m.icp_error, m.translation, m.ok, m.weight, w.cloud.size());
     if (!m.ok) continue;
     ids.push_back(c.id);
     out.push_back(m);
   }
   return out;
+}
+
+WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w) {
+  const auto key = std::make_tuple(candidate, std::lround(guess.x / 0.5), std::lround(guess.y / 0.5),
+                                   std::lround(guess.theta / 0.1));
+  WindowMatch m;
+  bool found = false;
+  {
+    const std::lock_guard<std::mutex> lock(cache_mutex_);
+    const auto it = match_cache_.find(key);
+    if (it != match_cache_.end()) m = it->second, found = true;
+  }
+  if (!found) {
+    // Searched from the rounded guess, so the result does not depend on which particle asked
+    // first (determinism under threads).
+    const Pose2 rounded{std::get<1>(key) * 0.5, std::get<2>(key) * 0.5, normalize_angle(std::get<3>(key) * 0.1)};
+    std::shared_ptr<const IcpTarget> target;
+    {
+      const std::lock_guard<std::mutex> lock(cache_mutex_);
+      target = icp_targets_[candidate];
+    }
+    if (!target) target = std::make_shared<const IcpTarget>(icp_target_of(segmap_.at(candidate).map, options_.matching));
+    m = match_window(segmap_.at(candidate).map, *target, w, rounded, options_.matching, likelihood_);
+    const std::lock_guard<std::mutex> lock(cache_mutex_);
+    icp_targets_[candidate] = target;
+    match_cache_.emplace(key, m);
+    ++stats_.match_attempts;
+  }
+  m.translation = std::hypot(m.pose.x - guess.x, m.pose.y - guess.y);
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, options_.matching) : 0.0;
+  return m;
 }
 
 SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const LookaheadWindow& w, std::mt19937_64& rng) {
@@ -168,7 +197,11 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const LookaheadWindo
   const bool segment = should_segment(p.submap_updates, p.motion_error, score, so);
   std::vector<std::size_t> ids;
   std::vector<WindowMatch> matches;
-  if (segment || p.updates_since_match >= options_.matching.period_updates) {
+  // Periodic matching waits for the period and, like the temporal-separation criterion,
+  // does not start over in a submap just entered (hysteresis, sec. 4.5.1).
+  const bool periodic = p.updates_since_match >= options_.matching.period_updates &&
+                        p.submap_updates >= options_.matching.period_updates;
+  if (segment || periodic) {
     matches = match_candidates(p, w, ids, rng);
     p.updates_since_match = 0;
   }
@@ -204,6 +237,7 @@ void SegSlam::update(std::size_t k) {
   const Pose2 u = scans_[last_update_].odometry.between(scans_[k].odometry);
   const LookaheadWindow w = window_after(last_update_);
   const PreparedScan prepared = prepare_scan(scans_[k], rbpf_.likelihood);
+  match_cache_.clear();
   const ParticleStepModels models{rbpf_, motion_, likelihood_, matcher_};
   const int n = static_cast<int>(particles_.size());
   std::vector<Transition> transitions(particles_.size());
@@ -254,6 +288,9 @@ void SegSlam::update(std::size_t k) {
     std::vector<std::size_t> roots;
     for (const SegParticle& p : particles_) roots.push_back(p.submap.predecessor), roots.push_back(p.submap.parent);
     stats_.pruned += segmap_.prune(roots);
+    for (auto it = icp_targets_.begin(); it != icp_targets_.end();) {
+      it = segmap_.contains(it->first) ? std::next(it) : icp_targets_.erase(it);
+    }
   }
 }
 

@@ -45,11 +45,14 @@ struct WindowMatch {
   double weight = 0.0;      ///< eq. 18
 };
 
-/// Sec. 4.5: matches the window onto `candidate` from `guess` (the robot in the candidate's
+/// The ICP target of a submap: its obstacle cells, binned ("octree-binned point clouds").
+IcpTarget icp_target_of(const OccupancyGrid& map, const MatchingOptions& options);
+
+/// Sec. 4.5: matches the window onto `candidate` (whose ICP target is `target`) from `guess` (the robot in the candidate's
 /// frame as the map sample places it): a coarse search on the candidate's distance field
 /// seeds ICP on binned points; the result is weighted by eq. 18.
-WindowMatch match_window(const OccupancyGrid& candidate, const LookaheadWindow& window,
-                         const Pose2& guess, const MatchingOptions& options,
+WindowMatch match_window(const OccupancyGrid& candidate, const IcpTarget& target,
+                         const LookaheadWindow& window, const Pose2& guess, const MatchingOptions& options,
                          const LikelihoodFieldModel& likelihood);
 
 /// Submaps of a map sample pasted into one grid of log-odds (the independence assumption:
@@ -57,12 +60,15 @@ WindowMatch match_window(const OccupancyGrid& candidate, const LookaheadWindow& 
 /// changed (its tiles not shared with the parent), so copied evidence is not counted twice.
 class MapCanvas {
  public:
-  explicit MapCanvas(double resolution) : resolution_(resolution) {}
+  /// Sums are clamped to the grid's log-odds bounds [nats], as one grid would clamp them, so
+  /// a sample is not more certain than a single map for evidence it merely repeats.
+  MapCanvas(double resolution, double log_odds_min, double log_odds_max)
+      : resolution_(resolution), min_(log_odds_min), max_(log_odds_max) {}
   void paste(const OccupancyGrid& map, const Pose2& frame, const OccupancyGrid* pasted_parent = nullptr);
   [[nodiscard]] ProbabilityMap to_probability_map() const;
 
  private:
-  double resolution_;
+  double resolution_, min_, max_;
   std::vector<std::pair<CellIndex, double>> cells_;  // target cell, log-odds [nats]
 };
 

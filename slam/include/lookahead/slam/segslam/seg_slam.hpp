@@ -9,6 +9,10 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <tuple>
 #include <random>
 #include <vector>
 
@@ -96,6 +100,10 @@ class SegSlam {
   void apply(SegParticle& p, Transition& t);
   void resample_if_needed();
 
+  /// Matches of this update by (candidate, guess rounded to 0.5 m / 0.1 rad): resampled
+  /// particles share their history and ask for the same match.
+  WindowMatch cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w);
+
   RbpfOptions rbpf_;
   SegSlamOptions options_;
   OdometryMotionModel motion_;
@@ -109,6 +117,10 @@ class SegSlam {
   std::size_t last_update_ = 0;   ///< the scan of the last filter update
   std::mt19937_64 rng_;
   SegSlamStatistics stats_;
+  std::mutex cache_mutex_;
+  /// ICP targets of closed submaps (immutable once closed), prepared on first use.
+  std::map<std::size_t, std::shared_ptr<const IcpTarget>> icp_targets_;
+  std::map<std::tuple<std::size_t, long, long, long>, WindowMatch> match_cache_;
 };
 
 }  // namespace lookahead::slam::segslam

@@ -39,25 +39,23 @@ struct MatchingOptions {
   std::size_t sample_submaps = 40;
   /// Winnowing (sec. 4.5.1): a candidate must have ended this long ago [s] ...
   double min_separation_s = 30.0;
-  /// ... and have observed cells within this radius of the robot in its frame [m].
-  double proximity_radius = 1.5;
+  /// ... and the robot, placed in its frame by the map sample, must be this near its path [m].
+  double proximity_radius = 3.0;
   /// At most this many candidates (the nearest) are matched per attempt. >= 1.
   int max_candidates = 2;
   /// Bin size of the point clouds ICP matches [m] ("octree-binned point clouds").
   double bin_size = 0.1;
-  /// Candidate points are taken within this range of the guessed pose [m].
-  double candidate_range = 12.0;
   /// The guess from the map sample is refined by a coarse search this wide first [m], [rad]
   /// (Deviation: the map sample's guess may be metres off after a long loop, beyond ICP's
   /// basin; the paper's localisation filter covers this with its initial spread).
   double search_radius = 2.0;
-  double search_angle = 0.35;
+  double search_angle = 0.25;
   int icp_iterations = 30;
   double icp_max_distance = 0.4;  ///< correspondences farther than this are outliers [m]
   /// Eq. 18: p(err_ICP) = exp(-err^2 / 2 sigma^2) with the mean nearest-neighbour error ...
   double icp_sigma = 0.05;
   /// ... and p(tau^2) = exp(-tau^2 / 2 sigma_tau^2) on the correction's translation [m].
-  double translation_sigma = 2.0;
+  double translation_sigma = 1.5;
   /// The null match (keep / start a fresh submap) weighs as much as a match with this error.
   double null_error = 0.08;
   /// A match with a smaller inlier share of the window's points is discarded. 0..1.
