@@ -95,22 +95,9 @@ void Rbpf::update_particles(const LaserScan& scan) {
 }
 
 void Rbpf::resample_if_needed() {
-  std::vector<double> logw(particles_.size());
-  for (std::size_t i = 0; i < particles_.size(); ++i) logw[i] = particles_[i].log_weight;
-  const std::vector<double> w = normalized_weights(logw);
-  const double neff = effective_sample_size(w);
-  stats_.neff.push_back(neff);
-  // Keep log weights small and comparable: subtract the max (does not change the ratios).
-  const double max_logw = *std::max_element(logw.begin(), logw.end());
-  for (Particle& p : particles_) p.log_weight -= max_logw;
-  if (neff >= options_.resample_threshold * static_cast<double>(particles_.size())) return;
-  const std::vector<std::size_t> keep = low_variance_resample(w, rng_);
-  std::vector<Particle> next;
-  next.reserve(particles_.size());
-  for (const std::size_t k : keep) next.push_back(particles_[k]);  // copies tile handles only
-  for (Particle& p : next) p.log_weight = 0.0;
-  particles_ = std::move(next);
-  ++stats_.resamplings;
+  bool resampled = false;
+  stats_.neff.push_back(resample_if_degenerate(particles_, options_.resample_threshold, rng_, resampled));
+  if (resampled) ++stats_.resamplings;
 }
 
 std::size_t Rbpf::best_particle() const {

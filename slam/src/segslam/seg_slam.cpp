@@ -2,10 +2,9 @@
 #include "lookahead/slam/segslam/seg_slam.hpp"
 
 #include <omp.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <cmath>
 #include <map>
@@ -148,7 +147,10 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
   std::vector<WindowMatch> out;
   for (const Candidate& c : candidates) {
     WindowMatch m = cached_match(c.id, c.guess, w);
-    if (std::getenv("SEGSLAM_DEBUG")) std::fprintf(stderr, "scan %zu cand %zu [%zu-%zu] d %.2f guess %.2f %.2f %.2f -> %.2f %.2f %.2f err %.3f tau %.2f ok %d w %.3f cloud %zu\n", last_update_, c.id, segmap_.at(c.id).interval.first_scan, segmap_.at(c.id).interval.last_scan, c.distance, c.guess.x, c.guess.y, c.guess.theta, m.pose.x, m.pose.y, m.pose.theta, m.icp_error, m.translation, m.ok, m.weight, w.cloud.size());
+    spdlog::debug("scan {} candidate {} [{}-{}] guess ({:.2f} {:.2f} {:.2f}) -> ({:.2f} {:.2f} {:.2f}) err {:.3f} tau {:.2f} ok {} w {:.3f}",
+                  last_update_, c.id, segmap_.at(c.id).interval.first_scan, segmap_.at(c.id).interval.last_scan,
+                  c.guess.x, c.guess.y, c.guess.theta, m.pose.x, m.pose.y, m.pose.theta, m.icp_error, m.translation,
+                  m.ok, m.weight);
     if (!m.ok) continue;
     ids.push_back(c.id);
     out.push_back(m);
@@ -295,20 +297,9 @@ void SegSlam::update(std::size_t k) {
 }
 
 void SegSlam::resample_if_needed() {
-  std::vector<double> logw;
-  for (const SegParticle& p : particles_) logw.push_back(p.log_weight);
-  const std::vector<double> w = normalized_weights(logw);
-  const double neff = effective_sample_size(w);
-  stats_.neff.push_back(neff);
-  const double max_logw = *std::max_element(logw.begin(), logw.end());
-  for (SegParticle& p : particles_) p.log_weight -= max_logw;
-  if (neff >= rbpf_.resample_threshold * static_cast<double>(particles_.size())) return;
-  std::vector<SegParticle> next;
-  next.reserve(particles_.size());
-  for (const std::size_t k : low_variance_resample(w, rng_)) next.push_back(particles_[k]);  // maps: tile handles
-  for (SegParticle& p : next) p.log_weight = 0.0;
-  particles_ = std::move(next);
-  ++stats_.resamplings;
+  bool resampled = false;
+  stats_.neff.push_back(resample_if_degenerate(particles_, rbpf_.resample_threshold, rng_, resampled));
+  if (resampled) ++stats_.resamplings;
 }
 
 std::size_t SegSlam::best_particle() const {

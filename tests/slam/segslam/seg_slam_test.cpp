@@ -98,3 +98,31 @@ TEST(SegSlam, RegisteredSampleHasLessEntropy) {
 
 }  // namespace
 }  // namespace lookahead::slam::segslam
+
+namespace lookahead::slam::segslam {
+namespace {
+
+// Determinism: the match cache and the parallel particle loop do not change the result.
+TEST(SegSlam, SameSeedSameResultWhateverTheThreadCount) {
+  const auto data = two_loops();
+  Pose2 est[2];
+  for (int threads = 1; threads <= 2; ++threads) {
+    RbpfOptions rbpf;
+    rbpf.particles = 4;
+    rbpf.threads = threads;
+    rbpf.linear_update = 0.3;
+    SegSlamOptions o;
+    o.segmentation.min_segment_updates = 6;
+    o.matching.min_separation_s = 10;
+    SegSlam filter(rbpf, o);
+    for (std::size_t i = 0; i < data.size() / 2; ++i) filter.add_scan(data[i].second);
+    filter.finish();
+    est[threads - 1] = filter.estimate();
+  }
+  EXPECT_EQ(est[0].x, est[1].x);
+  EXPECT_EQ(est[0].y, est[1].y);
+  EXPECT_EQ(est[0].theta, est[1].theta);
+}
+
+}  // namespace
+}  // namespace lookahead::slam::segslam
