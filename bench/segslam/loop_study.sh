@@ -18,13 +18,16 @@
 # (--threads 1), two runs at a time on a 2-core machine.
 #
 # Usage: bench/segslam/loop_study.sh [BUILD=build] [OUT=bench/results/segslam_loop]
-#   env: RUNS (default 20), PARTICLES (default "1 5 10 20 40 100"), JOBS (default 2)
+#   env: RUNS (default 20), FIRST_SEED (default 1; seeds FIRST_SEED..RUNS, so a study can be
+#   continued in the same OUT), PARTICLES (default "1 5 10 20 40 100"), JOBS (default 2).
+#   The report covers every runs-*.txt in OUT.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD=${1:-build}
 OUT=${2:-bench/results/segslam_loop}
 DATA=${LOOKAHEAD_SHARED_DIR:-../shared}/data
 RUNS=${RUNS:-20}
+FIRST_SEED=${FIRST_SEED:-1}
 PARTICLES=${PARTICLES:-"1 5 10 20 40 100"}
 JOBS=${JOBS:-2}
 mkdir -p "$OUT"
@@ -58,12 +61,12 @@ run() {  # run METHOD N SEED
 export -f run
 export OUT BUILD
 mkdir -p "$OUT/runs"
-for n in $PARTICLES; do for s in $(seq 1 "$RUNS"); do for m in rbpf segslam; do echo "$m $n $s"; done; done; done |
-  xargs -P "$JOBS" -L 1 bash -c 'run "$@"' _ | tee "$OUT/runs.txt"
+for n in $PARTICLES; do for s in $(seq "$FIRST_SEED" "$RUNS"); do for m in rbpf segslam; do echo "$m $n $s"; done; done; done |
+  xargs -P "$JOBS" -L 1 bash -c 'run "$@"' _ | tee "$OUT/runs-$FIRST_SEED.txt"
 
-python3 - "$OUT/runs.txt" <<'PY' | tee "$OUT/report.md"
-import statistics as st, sys, subprocess, collections
-rows = [l.split() for l in open(sys.argv[1]) if l.strip()]
+python3 - "$OUT" <<'PY' | tee "$OUT/report.md"
+import statistics as st, sys, subprocess, collections, glob
+rows = [l.split() for f in sorted(glob.glob(sys.argv[1] + '/runs-*.txt')) for l in open(f) if l.strip()]
 by = collections.defaultdict(list)
 for m, n, s, e, t in rows:
     by[(m, int(n))].append((float(e), float(t)))

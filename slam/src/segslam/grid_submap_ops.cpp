@@ -3,7 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdint>
+#include <unordered_map>
 
 #include "lookahead/slam/grid/grid_tile.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
@@ -157,7 +158,8 @@ void MapCanvas::paste(const OccupancyGrid& map, const Pose2& frame, const Occupa
   const double c = std::cos(frame.theta), s = std::sin(frame.theta);
   // Rotated cells alias: average the cells of this submap that land in one target cell, so
   // the pasted evidence is not doubled (the sum across submaps is the independence model).
-  std::map<std::pair<int, int>, std::pair<double, int>> mine;
+  std::unordered_map<std::int64_t, std::pair<double, int>> mine;
+  const auto key = [](int x, int y) { return (static_cast<std::int64_t>(x) << 32) ^ static_cast<std::uint32_t>(y); };
   for (int ty = lo.y >> GridTile::kBits; ty <= hi.y >> GridTile::kBits; ++ty) {
     for (int tx = lo.x >> GridTile::kBits; tx <= hi.x >> GridTile::kBits; ++tx) {
       const GridTile* t = map.tile(tx, ty);
@@ -173,33 +175,41 @@ void MapCanvas::paste(const OccupancyGrid& map, const Pose2& frame, const Occupa
         double x, y;
         map.cell_center(cell, x, y);
         const double wx = frame.x + c * x - s * y, wy = frame.y + s * x + c * y;
-        auto& [sum, n] = mine[{static_cast<int>(std::floor(wx / resolution_)), static_cast<int>(std::floor(wy / resolution_))}];
+        auto& [sum, n] = mine[key(static_cast<int>(std::floor(wx / resolution_)), static_cast<int>(std::floor(wy / resolution_)))];
         sum += delta;
         ++n;
       }
     }
   }
-  for (const auto& [k, sn] : mine) cells_.push_back({{k.first, k.second}, sn.first / sn.second});
+  for (const auto& [k, sn] : mine) {
+    cells_.push_back({{static_cast<int>(k >> 32), static_cast<int>(static_cast<std::uint32_t>(k & 0xffffffff))}, sn.first / sn.second});
+  }
 }
 
 ProbabilityMap MapCanvas::to_probability_map() const {
   ProbabilityMap m;
   m.resolution = resolution_;
   if (cells_.empty()) return m;
-  std::map<std::pair<int, int>, double> sum;  // ordered: deterministic output
-  for (const auto& [cell, l] : cells_) sum[{cell.x, cell.y}] += l;
-  int x0 = sum.begin()->first.first, x1 = x0, y0 = sum.begin()->first.second, y1 = y0;
-  for (const auto& [k, l] : sum) {
-    x0 = std::min(x0, k.first), x1 = std::max(x1, k.first);
-    y0 = std::min(y0, k.second), y1 = std::max(y1, k.second);
+  int x0 = cells_[0].first.x, x1 = x0, y0 = cells_[0].first.y, y1 = y0;
+  for (const auto& [c, l] : cells_) {
+    x0 = std::min(x0, c.x), x1 = std::max(x1, c.x);
+    y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
   }
   m.width = x1 - x0 + 1;
   m.height = y1 - y0 + 1;
   m.origin_x = x0 * resolution_;
   m.origin_y = y0 * resolution_;
-  m.p.assign(static_cast<std::size_t>(m.width) * static_cast<std::size_t>(m.height), -1.0);
-  for (const auto& [k, l] : sum) {
-    m.p[static_cast<std::size_t>((k.second - y0) * m.width + (k.first - x0))] = 1.0 - 1.0 / (1.0 + std::exp(std::clamp(l, min_, max_)));
+  const std::size_t n = static_cast<std::size_t>(m.width) * static_cast<std::size_t>(m.height);
+  std::vector<double> sum(n, 0.0);
+  std::vector<char> known(n, 0);
+  for (const auto& [c, l] : cells_) {
+    const auto i = static_cast<std::size_t>((c.y - y0) * m.width + (c.x - x0));
+    sum[i] += l;
+    known[i] = 1;
+  }
+  m.p.assign(n, -1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (known[i]) m.p[i] = 1.0 - 1.0 / (1.0 + std::exp(std::clamp(sum[i], min_, max_)));
   }
   return m;
 }
