@@ -40,6 +40,8 @@ void visit_sections(SegSlamOptions& o, V&& v) {
   v("translation_sigma", m.translation_sigma, "eq. 18 sigma of the correction [m]");
   v("null_error", m.null_error, "the null match weighs as a match of this error [m]");
   v("min_inlier_ratio", m.min_inlier_ratio, "matches with fewer inliers are discarded");
+  v("use_localization_filter", m.use_localization_filter, "match by a localisation filter (eq. 19), not ICP (eq. 18)");
+  v("localization_particles", m.localization_particles, "particles of the localisation filter");
   v.section("offline");
   v("map_samples", o.offline.map_samples, "map samples of the minimum-entropy search");
 }

@@ -158,6 +158,13 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
   return out;
 }
 
+std::uint64_t SegSlam::localization_seed(const std::tuple<std::size_t, long, long, long>& key) const {
+  // From the cache key, not the asking particle: the same match whatever the thread order.
+  const auto [candidate, x, y, theta] = key;
+  const std::uint64_t a = mix_seed(rbpf_.seed, stats_.updates, candidate);
+  return mix_seed(a, static_cast<std::uint64_t>(x) * 0x1000003ull + static_cast<std::uint64_t>(y), static_cast<std::uint64_t>(theta));
+}
+
 WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w) {
   const auto key = std::make_tuple(candidate, std::lround(guess.x / 0.5), std::lround(guess.y / 0.5),
                                    std::lround(guess.theta / 0.1));
@@ -178,14 +185,17 @@ WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, con
       target = icp_targets_[candidate];
     }
     if (!target) target = std::make_shared<const IcpTarget>(icp_target_of(segmap_.at(candidate).map, options_.matching));
-    m = match_window(segmap_.at(candidate).map, *target, w, rounded, options_.matching, likelihood_);
+    m = options_.matching.use_localization_filter
+            ? localize_window(segmap_.at(candidate).map, w, rounded, options_.matching, likelihood_,
+                              localization_seed(key))
+            : match_window(segmap_.at(candidate).map, *target, w, rounded, options_.matching, likelihood_);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     icp_targets_[candidate] = target;
     match_cache_.emplace(key, m);
     ++stats_.match_attempts;
   }
   m.translation = std::hypot(m.pose.x - guess.x, m.pose.y - guess.y);
-  m.weight = m.ok ? match_weight(m.icp_error, m.translation, options_.matching) : 0.0;
+  m.weight = m.ok ? m.spread_factor * match_weight(m.icp_error, m.translation, options_.matching) : 0.0;
   return m;
 }
 

@@ -10,6 +10,7 @@
 //   MapCanvas              a map sample's submaps in one map, for entropy (eq. 20-22)
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "lookahead/slam/geometry/pose2.hpp"
@@ -42,7 +43,9 @@ struct WindowMatch {
   Pose2 pose;               ///< the robot at the window's start, in the candidate's frame
   double icp_error = 0.0;   ///< [m]
   double translation = 0.0; ///< tau_m: distance from the guess [m]
-  double weight = 0.0;      ///< eq. 18
+  double weight = 0.0;      ///< eq. 18 (or eq. 19)
+  /// Eq. 19's p(|Sigma_X|) for a localisation-filter match; 1 for ICP.
+  double spread_factor = 1.0;
 };
 
 /// The ICP target of a submap: its obstacle cells, binned ("octree-binned point clouds").
@@ -54,6 +57,14 @@ IcpTarget icp_target_of(const OccupancyGrid& map, const MatchingOptions& options
 WindowMatch match_window(const OccupancyGrid& candidate, const IcpTarget& target,
                          const LookaheadWindow& window, const Pose2& guess, const MatchingOptions& options,
                          const LikelihoodFieldModel& likelihood);
+
+/// Sec. 4.5.2, eq. 19: matches the window onto `candidate` with a separate localisation
+/// particle filter started around `guess` (spread over the coarse-search extent) and run over
+/// the window's scans; weighted by p(err_X) p(|Sigma_X|) p(tau^2), with err_X the RMS distance
+/// of the window's points to the candidate's obstacles at the filter's mean pose.
+WindowMatch localize_window(const OccupancyGrid& candidate, const LookaheadWindow& window,
+                            const Pose2& guess, const MatchingOptions& options,
+                            const LikelihoodFieldModel& likelihood, std::uint64_t seed);
 
 /// Submaps of a map sample pasted into one grid of log-odds (the independence assumption:
 /// overlapping evidence adds). A match child pasted after its parent adds only the cells it

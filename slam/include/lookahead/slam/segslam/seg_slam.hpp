@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -103,6 +104,7 @@ class SegSlam {
   /// Matches of this update by (candidate, guess rounded to 0.5 m / 0.1 rad): resampled
   /// particles share their history and ask for the same match.
   WindowMatch cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w);
+  std::uint64_t localization_seed(const std::tuple<std::size_t, long, long, long>& key) const;
 
   RbpfOptions rbpf_;
   SegSlamOptions options_;

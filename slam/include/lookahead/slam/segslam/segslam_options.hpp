@@ -58,6 +58,11 @@ struct MatchingOptions {
   double translation_sigma = 1.5;
   /// The null match (keep / start a fresh submap) weighs as much as a match with this error.
   double null_error = 0.08;
+  /// Match by a separate localisation particle filter weighted by eq. 19 instead of ICP
+  /// weighted by eq. 18 (sec. 4.5.2).
+  bool use_localization_filter = false;
+  /// Particles of that filter, spread over the coarse-search extent around the guess. >= 10
+  int localization_particles = 200;
   /// A match with a smaller inlier share of the window's points is discarded. 0..1.
   double min_inlier_ratio = 0.6;
 };
