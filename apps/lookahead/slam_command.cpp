@@ -20,6 +20,7 @@
 #include "lookahead/slam/rbpf/rbpf.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "slam_segslam.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -38,6 +39,9 @@ struct SlamArgs {
   std::size_t max_scans = 0;
   bool skip_bad_lines = false;
   bool predict = false;
+  std::string method = "rbpf";
+  std::string segslam_config;
+  int map_samples = -1;
 };
 
 slam::RbpfOptions options_from(const SlamArgs& a) {
@@ -146,7 +150,17 @@ Run add_slam_command(CLI::App& app) {
   app.add_option("--max-scans", args->max_scans, "stop after this many scans (0 = all)");
   app.add_flag("--skip-bad-lines", args->skip_bad_lines, "count and skip malformed log lines");
   app.add_flag("--predict", args->predict, "P-SLAM: predict the region ahead and use it in the weights");
-  return [args] { return run_slam(*args); };
+  app.add_option("--method", args->method, "rbpf or segslam (segmented RBPF with submaps)")
+      ->check(CLI::IsMember({"rbpf", "segslam"}))->capture_default_str();
+  app.add_option("--segslam-config", args->segslam_config, "SegSLAM YAML options (see config/segslam/default.yaml)");
+  app.add_option("--map-samples", args->map_samples, "SegSLAM: map samples of the minimum-entropy search");
+  return [args] {
+    if (args->method == "segslam") {
+      return run_segslam({args->log, args->out, args->config, args->segslam_config, args->particles, args->seed,
+                          args->threads, args->max_scans, args->skip_bad_lines, args->map_samples});
+    }
+    return run_slam(*args);
+  };
 }
 
 }  // namespace lookahead::app

@@ -7,20 +7,11 @@
 #include <stdexcept>
 
 #include "lookahead/slam/grid/scan_inserter.hpp"
-#include "lookahead/slam/rbpf/improved_proposal.hpp"
+#include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 
 namespace lookahead::slam {
 namespace {
-
-// A reproducible, well-mixed seed for (run seed, update, particle): draws do not depend on
-// which thread runs which particle.
-std::uint64_t mix_seed(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-  std::uint64_t z = a ^ (b * 0x9E3779B97F4A7C15ull) ^ (c * 0xC2B2AE3D27D4EB4Full);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
 
 void validate(const RbpfOptions& o) {
   if (o.particles < 1 || o.particles > 100000) throw std::invalid_argument("particles in 1..100000");
@@ -86,24 +77,9 @@ bool Rbpf::motion_threshold_met(const LaserScan& scan) const {
 void Rbpf::update_particle(Particle& p, const Pose2& u, const LaserScan& scan,
                            const PreparedScan& prepared, std::mt19937_64& rng,
                            bool& failed, HypothesisScore& on_hypotheses) const {
-  const Pose2 predicted = p.pose.compose(u);
   const bool warm = stats_.updates > static_cast<std::size_t>(options_.warmup_updates);
-  MatchResult m;
-  if (warm) m = matcher_.match(p.map, predicted, prepared);
-  if (warm && m.ok) {
-    const ProposalDraw d = draw_improved_proposal(p.map, p.pose, u, m.pose, prepared, likelihood_,
-                                                  motion_, options_.proposal, rng);
-    p.pose = d.pose;
-    p.log_weight += options_.weight_exponent * d.log_eta;
-  } else {
-    // No usable match: sample the odometry model and weight by the observation (the
-    // standard proposal), as Grisetti et al. do when scan matching fails.
-    p.pose = motion_.sample(p.pose, u, rng);
-    if (warm) {
-      p.log_weight += options_.weight_exponent * likelihood_.log_likelihood(p.map, p.pose, prepared);
-    }
-    failed = warm;
-  }
+  const ParticleStepModels models{options_, motion_, likelihood_, matcher_};
+  failed = draw_particle(models, p.map, p.pose, p.log_weight, u, prepared, warm, rng);
   // S2 reads the map before this scan (m_{k-1}): after insertion every end point is explored.
   if (warm && !hypotheses_.empty()) {
     on_hypotheses = score_on_hypotheses(p.map, p.pose, prepared, hypotheses_, p.hypothesis_offsets, likelihood_);
@@ -181,22 +157,9 @@ void Rbpf::clear_hypotheses() {
 }
 
 void Rbpf::resample_if_needed() {
-  std::vector<double> logw(particles_.size());
-  for (std::size_t i = 0; i < particles_.size(); ++i) logw[i] = particles_[i].log_weight;
-  const std::vector<double> w = normalized_weights(logw);
-  const double neff = effective_sample_size(w);
-  stats_.neff.push_back(neff);
-  // Keep log weights small and comparable: subtract the max (does not change the ratios).
-  const double max_logw = *std::max_element(logw.begin(), logw.end());
-  for (Particle& p : particles_) p.log_weight -= max_logw;
-  if (neff >= options_.resample_threshold * static_cast<double>(particles_.size())) return;
-  const std::vector<std::size_t> keep = low_variance_resample(w, rng_);
-  std::vector<Particle> next;
-  next.reserve(particles_.size());
-  for (const std::size_t k : keep) next.push_back(particles_[k]);  // copies tile handles only
-  for (Particle& p : next) p.log_weight = 0.0;
-  particles_ = std::move(next);
-  ++stats_.resamplings;
+  bool resampled = false;
+  stats_.neff.push_back(resample_if_degenerate(particles_, options_.resample_threshold, rng_, resampled));
+  if (resampled) ++stats_.resamplings;
 }
 
 std::size_t Rbpf::best_particle() const {

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# SegSLAM paper sec. 5.2 (Tables II and III) on a 2D log: loop-closure error and run time of
+# the RBPF and SegSLAM against the particle count, RUNS runs (filter seeds) each.
+#
+# The loop: Intel Research Lab, real scans 1098..1770 of shared/data/derived-flirtlib/
+# intel-lab.log (88.6 m driven, the robot ends 0.97 m from where it started; the first
+# place the log revisits with the same heading), with SYNTHETIC odometry
+# (bench/tools/synth_odometry, seed 1, heading bias k_b = 0.02 rad/m: 7.1 m loop error for
+# dead reckoning). Both filters run the paper's particle step (standard proposal, no scan
+# matcher: config/segslam/intel_loop_rbpf.yaml), so closing the loop is the filter's problem.
+#
+# Final position error: the estimated pose of the last scan relative to the first, against
+# the same relative pose of the scans' corrected poses (bench/segslam/loop_error.py). RBPF:
+# the best particle's final pose (what `lookahead slam` writes); SegSLAM: the best particle's
+# reconstructed trajectory (eq. 11, loops closed by its matches), brought to the last scan
+# by dead reckoning. Run time: the filter's wall time from run.json, one thread each
+# (--threads 1), two runs at a time on a 2-core machine.
+#
+# Usage: bench/segslam/loop_study.sh [BUILD=build] [OUT=bench/results/segslam_loop]
+#   env: RUNS (default 20), FIRST_SEED (default 1; seeds FIRST_SEED..RUNS, so a study can be
+#   continued in the same OUT), PARTICLES (default "1 5 10 20 40 100"), JOBS (default 2).
+#   The report covers every runs-*.txt in OUT.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+BUILD=${1:-build}
+OUT=${2:-bench/results/segslam_loop}
+DATA=${LOOKAHEAD_SHARED_DIR:-../shared}/data
+RUNS=${RUNS:-20}
+FIRST_SEED=${FIRST_SEED:-1}
+PARTICLES=${PARTICLES:-"1 5 10 20 40 100"}
+JOBS=${JOBS:-2}
+mkdir -p "$OUT"
+[[ -x $BUILD/lookahead && -x $BUILD/bench/synth_odometry ]] || { echo "build lookahead and synth_odometry first" >&2; exit 1; }
+
+# The one-loop log: scans 1098..1770 (VERTEX2 + ROBOTLASER1 pairs) and its synthetic odometry.
+python3 - "$DATA/derived-flirtlib/intel-lab.log" "$OUT/intel-loop-truth.log" <<'PY'
+import sys
+records, current = [], None
+for line in open(sys.argv[1]):
+    if line.startswith('VERTEX2'):
+        current = [line]
+        records.append(current)
+    elif current is not None:
+        current.append(line)
+with open(sys.argv[2], 'w') as out:
+    for r in records[1098:1771]:
+        out.writelines(r)
+PY
+"$BUILD/bench/synth_odometry" "$OUT/intel-loop-truth.log" "$OUT/intel-loop.log" --seed 1 --kb 0.02 > /dev/null
+
+run() {  # run METHOD N SEED
+  local dir=$OUT/runs/$1-$2-$3
+  "$BUILD/lookahead" slam "$OUT/intel-loop.log" --method "$1" --particles "$2" --seed "$3" --threads 1 \
+    --config config/segslam/intel_loop_rbpf.yaml --map-samples 1 --out "$dir" > "$dir.log" 2>&1
+  local err time
+  err=$(python3 bench/segslam/loop_error.py "$dir/trajectory.txt" "$OUT/intel-loop-truth.log")
+  time=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["wall_time_s"])' "$dir/run.json")
+  echo "$1 $2 $3 $err $time"
+}
+export -f run
+export OUT BUILD
+mkdir -p "$OUT/runs"
+for n in $PARTICLES; do for s in $(seq "$FIRST_SEED" "$RUNS"); do for m in rbpf segslam; do echo "$m $n $s"; done; done; done |
+  xargs -P "$JOBS" -L 1 bash -c 'run "$@"' _ | tee "$OUT/runs-$FIRST_SEED.txt"
+
+python3 - "$OUT" <<'PY' | tee "$OUT/report.md"
+import statistics as st, sys, subprocess, collections, glob
+rows = [l.split() for f in sorted(glob.glob(sys.argv[1] + '/runs-*.txt')) for l in open(f) if l.strip()]
+by = collections.defaultdict(list)
+for m, n, s, e, t in rows:
+    by[(m, int(n))].append((float(e), float(t)))
+commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'], capture_output=True, text=True).stdout.strip()
+cpu = [l.split(':')[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')][0]
+print(f"commit {commit}, {cpu}; loaded machine (other builds running): times are indicative")
+print()
+print("| particles | runs | RBPF error m (mean / std) | SegSLAM error m (mean / std) | RBPF time s (median) | SegSLAM time s (median) |")
+print("|---|---|---|---|---|---|")
+for n in sorted({k[1] for k in by}):
+    r, g = by.get(('rbpf', n), []), by.get(('segslam', n), [])
+    f = lambda v: f"{st.mean(v):.2f} / {st.stdev(v):.2f}" if len(v) > 1 else (f"{v[0]:.2f} / -" if v else "-")
+    med = lambda v: f"{st.median(v):.1f}" if v else "-"
+    print(f"| {n} | {len(r)} | {f([e for e, _ in r])} | {f([e for e, _ in g])} | {med([t for _, t in r])} | {med([t for _, t in g])} |")
+PY

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// Every SegSLAM parameter (Fairfield et al. 2010, sec. 4.3-4.5), nested by component. The
+// particle filter steps are the RBPF's and keep their own options (RbpfOptions,
+// config/slam/default.yaml); these are the defaults config/segslam/default.yaml mirrors.
+#pragma once
+
+#include <cstddef>
+
+namespace lookahead::slam::segslam {
+
+/// Segmentation (sec. 4.3): when a particle starts a new submap.
+struct SegmentationOptions {
+  /// Look-ahead window [s]: the filter runs this far behind the newest scan, and the
+  /// estimate is brought to the present by dead reckoning (sec. 4.1). 0..60.
+  double lookahead_s = 3.0;
+  /// Minimum segment size in filter updates (sec. 4.3.2, "a minimum segment size"). >= 1.
+  int min_segment_updates = 10;
+  /// Eq. 13-14: position error grows by alpha_translation per metre and alpha_rotation per
+  /// radian of dead-reckoned motion [m/m], [m/rad] ...
+  double alpha_translation = 0.05;
+  double alpha_rotation = 0.3;
+  /// ... times this factor, the expected share left after SLAM corrections (sec. 4.3.1,
+  /// "a slightly less pessimistic dead-reckoning error model"). (0, 1].
+  double slam_factor = 0.5;
+  /// Segment when the estimated error in the submap reaches this [m]. > 0.
+  double max_motion_error = 1.0;
+  /// Eq. 17: segment when the predictive score of the look-ahead window (mean share of its
+  /// end points the submap explains) falls below this. 0..1; 0 disables the criterion.
+  double predictive_threshold = 0.5;
+  /// Window scans scored by eq. 17 (evenly spread; bounds the cost). >= 1.
+  int predictive_scans = 4;
+};
+
+/// Matching (sec. 4.5): when a particle re-enters an old submap.
+struct MatchingOptions {
+  /// Try matching every this many filter updates (and at every segmentation). >= 1.
+  int period_updates = 4;
+  /// Submaps placed in a local metric map sample (sec. 4.4). >= 2.
+  std::size_t sample_submaps = 40;
+  /// Winnowing (sec. 4.5.1): a candidate must have ended this long ago [s] ...
+  double min_separation_s = 30.0;
+  /// ... and the robot, placed in its frame by the map sample, must be this near its path [m].
+  double proximity_radius = 3.0;
+  /// At most this many candidates (the nearest) are matched per attempt. >= 1.
+  int max_candidates = 2;
+  /// Bin size of the point clouds ICP matches [m] ("octree-binned point clouds").
+  double bin_size = 0.1;
+  /// The guess from the map sample is refined by a coarse search this wide first [m], [rad]
+  /// (Deviation: the map sample's guess may be metres off after a long loop, beyond ICP's
+  /// basin; the paper's localisation filter covers this with its initial spread).
+  double search_radius = 2.0;
+  double search_angle = 0.25;
+  int icp_iterations = 30;
+  double icp_max_distance = 0.4;  ///< correspondences farther than this are outliers [m]
+  /// Eq. 18: p(err_ICP) = exp(-err^2 / 2 sigma^2) with the mean nearest-neighbour error ...
+  double icp_sigma = 0.05;
+  /// ... and p(tau^2) = exp(-tau^2 / 2 sigma_tau^2) on the correction's translation [m].
+  double translation_sigma = 1.5;
+  /// The null match (keep / start a fresh submap) weighs as much as a match with this error.
+  double null_error = 0.08;
+  /// Match by a separate localisation particle filter weighted by eq. 19 instead of ICP
+  /// weighted by eq. 18 (sec. 4.5.2).
+  bool use_localization_filter = false;
+  /// Particles of that filter, spread over the coarse-search extent around the guess. >= 10
+  int localization_particles = 200;
+  /// A match with a smaller inlier share of the window's points is discarded. 0..1.
+  double min_inlier_ratio = 0.6;
+};
+
+/// Offline map sampling (sec. 5.4).
+struct OfflineOptions {
+  int map_samples = 30;  ///< full map samples searched for the minimum entropy map. >= 1
+};
+
+struct SegSlamOptions {
+  SegmentationOptions segmentation;
+  MatchingOptions matching;
+  OfflineOptions offline;
+};
+
+/// Throws std::invalid_argument naming the first option out of its range.
+void validate(const SegSlamOptions& options);
+
+}  // namespace lookahead::slam::segslam

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/config/segslam_config.hpp"
+
+#include <stdexcept>
+
+#include "lookahead/slam/config/yaml_sections.hpp"
+#include "lookahead/slam/io/parse_error.hpp"
+
+namespace lookahead::slam {
+namespace {
+
+using segslam::SegSlamOptions;
+
+// The single list of keys, walked by the loader and the dumper.
+template <typename V>
+void visit_sections(SegSlamOptions& o, V&& v) {
+  auto& s = o.segmentation;
+  v.section("segmentation");
+  v("lookahead_s", s.lookahead_s, "look-ahead window; the filter runs this far behind [s]");
+  v("min_segment_updates", s.min_segment_updates, "minimum segment size [filter updates]");
+  v("alpha_translation", s.alpha_translation, "eq. 13-14 error per metre driven [m/m]");
+  v("alpha_rotation", s.alpha_rotation, "eq. 13-14 error per radian turned [m/rad]");
+  v("slam_factor", s.slam_factor, "share of the dead-reckoning error SLAM leaves");
+  v("max_motion_error", s.max_motion_error, "segment at this estimated error [m]");
+  v("predictive_threshold", s.predictive_threshold, "eq. 17: segment below this window score (0 = off)");
+  v("predictive_scans", s.predictive_scans, "window scans scored by eq. 17");
+  auto& m = o.matching;
+  v.section("matching");
+  v("period_updates", m.period_updates, "try matching every n updates");
+  v("sample_submaps", m.sample_submaps, "submaps in a local metric map sample");
+  v("min_separation_s", m.min_separation_s, "candidate must have ended this long ago [s]");
+  v("proximity_radius", m.proximity_radius, "robot must be this near the candidate's path [m]");
+  v("max_candidates", m.max_candidates, "candidates matched per attempt");
+  v("bin_size", m.bin_size, "ICP point bins [m]");
+  v("search_radius", m.search_radius, "coarse search before ICP, translation [m]");
+  v("search_angle", m.search_angle, "coarse search before ICP, rotation [rad]");
+  v("icp_iterations", m.icp_iterations, "ICP iterations");
+  v("icp_max_distance", m.icp_max_distance, "ICP outlier distance [m]");
+  v("icp_sigma", m.icp_sigma, "eq. 18 sigma of the ICP error [m]");
+  v("translation_sigma", m.translation_sigma, "eq. 18 sigma of the correction [m]");
+  v("null_error", m.null_error, "the null match weighs as a match of this error [m]");
+  v("min_inlier_ratio", m.min_inlier_ratio, "matches with fewer inliers are discarded");
+  v("use_localization_filter", m.use_localization_filter, "match by a localisation filter (eq. 19), not ICP (eq. 18)");
+  v("localization_particles", m.localization_particles, "particles of the localisation filter");
+  v.section("offline");
+  v("map_samples", o.offline.map_samples, "map samples of the minimum-entropy search");
+}
+
+}  // namespace
+
+SegSlamOptions parse_segslam_options(const std::string& yaml, const std::string& source, const SegSlamOptions& base) {
+  const YAML::Node root = config::parse_sections(yaml, source);
+  SegSlamOptions o = base;
+  if (root.IsNull()) return o;
+  config::SectionLoader loader(root, source);
+  visit_sections(o, loader);
+  loader.reject_unknown();
+  try {
+    segslam::validate(o);
+  } catch (const std::invalid_argument& e) {
+    throw ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+  }
+  return o;
+}
+
+SegSlamOptions load_segslam_options(const std::string& path, const SegSlamOptions& base) {
+  return parse_segslam_options(config::read_text_file(path), path, base);
+}
+
+std::string dump_segslam_options(const SegSlamOptions& options) {
+  SegSlamOptions copy = options;
+  config::SectionDumper d;
+  visit_sections(copy, d);
+  return d.str();
+}
+
+}  // namespace lookahead::slam

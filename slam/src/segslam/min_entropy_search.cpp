@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/segslam/min_entropy_search.hpp"
+
+#include <omp.h>
+
+#include <limits>
+
+#include "lookahead/slam/eval/map_entropy.hpp"
+#include "lookahead/slam/rbpf/particle_step.hpp"
+#include "lookahead/slam/rbpf/resampler.hpp"
+
+namespace lookahead::slam::segslam {
+
+double scaled_entropy(const ProbabilityMap& map) {
+  return map_entropy(map).total * map.resolution * map.resolution;
+}
+
+MapSample sample_full_map(const SegSlam& filter, std::size_t particle, std::mt19937_64& rng) {
+  const GridSegMap& segmap = filter.segmap();
+  const GridSubmap& start = filter.particles().at(particle).submap;
+  MapSample s;
+  s.particle = particle;
+  s.placed = sample_local_map(segmap, start, kNoSubmap, std::numeric_limits<std::size_t>::max(), rng);
+  auto submap_of = [&](std::size_t i) -> const GridSubmap& { return i == 0 ? start : segmap.at(s.placed[i].id); };
+  // Re-anchor on the first segment (the odometry frame of the first scan) when reached.
+  for (std::size_t i = 0; i < s.placed.size(); ++i) {
+    if (submap_of(i).interval.first_scan != 0) continue;
+    const Pose2 to_world = s.placed[i].frame.inverse();
+    for (auto& p : s.placed) p.frame = to_world.compose(p.frame);
+    break;
+  }
+  const GridOptions& grid = filter.rbpf_options().grid;
+  MapCanvas canvas(grid.resolution, grid.log_odds_min, grid.log_odds_max);
+  for (std::size_t i = 0; i < s.placed.size(); ++i) {
+    const GridSubmap& m = submap_of(i);
+    const GridSubmap* parent = nullptr;
+    for (std::size_t j = 0; j < s.placed.size() && m.parent != kNoSubmap; ++j) {
+      if (j != i && s.placed[j].id == m.parent) parent = &segmap.at(m.parent);
+    }
+    canvas.paste(m.map, s.placed[i].frame, parent ? &parent->map : nullptr);
+  }
+  s.map = canvas.to_probability_map();
+  s.entropy = scaled_entropy(s.map);
+  return s;
+}
+
+MinEntropyResult min_entropy_search(const SegSlam& filter, int samples, std::uint64_t seed, int threads) {
+  std::vector<double> logw;
+  for (const SegParticle& p : filter.particles()) logw.push_back(p.log_weight);
+  const std::vector<double> w = normalized_weights(logw);
+  std::vector<MapSample> drawn(static_cast<std::size_t>(samples));
+  const int t = threads > 0 ? threads : omp_get_num_procs();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(t)
+  for (int i = 0; i < samples; ++i) {
+    std::mt19937_64 rng(mix_seed(seed, 0xE27, static_cast<std::uint64_t>(i)));
+    std::discrete_distribution<std::size_t> pick(w.begin(), w.end());
+    drawn[static_cast<std::size_t>(i)] = sample_full_map(filter, pick(rng), rng);
+  }
+  MinEntropyResult r;
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    r.entropies.push_back(drawn[i].entropy);
+    if (drawn[i].entropy < drawn[best].entropy) best = i;
+  }
+  r.best = std::move(drawn[best]);
+  return r;
+}
+
+}  // namespace lookahead::slam::segslam

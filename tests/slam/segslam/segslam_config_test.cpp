@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/config/segslam_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "lookahead/slam/io/parse_error.hpp"
+
+namespace lookahead::slam {
+namespace {
+
+TEST(SegSlamConfig, ShippedDefaultsMatchTheCode) {
+  std::ifstream in(std::string(LOOKAHEAD_SOURCE_DIR) + "/config/segslam/default.yaml");
+  ASSERT_TRUE(in) << "config/segslam/default.yaml missing";
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "# lookahead SegSLAM defaults\n" + dump_segslam_options({}));
+}
+
+TEST(SegSlamConfig, DumpReadsBack) {
+  segslam::SegSlamOptions o;
+  o.matching.icp_sigma = 0.123;
+  o.segmentation.min_segment_updates = 7;
+  const auto back = parse_segslam_options(dump_segslam_options(o), "dump");
+  EXPECT_EQ(dump_segslam_options(back), dump_segslam_options(o));
+}
+
+TEST(SegSlamConfig, ErrorsNameFileLineKeyAndValue) {
+  try {
+    parse_segslam_options("matching:\n  icp_sigma: 0.1\n  icp_sigm: 1\n", "s.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "s.yaml");
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "matching.icp_sigm");
+  }
+  try {
+    parse_segslam_options("segmentation:\n  lookahead_s: soon\n", "s.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.value(), "soon");
+  }
+  EXPECT_THROW(parse_segslam_options("segmentation:\n  lookahead_s: -1\n", "s.yaml"), ParseError);
+  EXPECT_THROW(parse_segslam_options("filter:\n  particles: 3\n", "s.yaml"), ParseError);
+}
+
+}  // namespace
+}  // namespace lookahead::slam
