@@ -19,6 +19,7 @@
 #include "lookahead/slam/rbpf/rbpf.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "slam_hybrid.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -36,6 +37,7 @@ struct SlamArgs {
   int threads = -1;
   std::size_t max_scans = 0;
   bool skip_bad_lines = false;
+  std::string method = "rbpf";
 };
 
 slam::RbpfOptions options_from(const SlamArgs& a) {
@@ -89,7 +91,8 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
 }
 
 int run_slam(const SlamArgs& a) {
-  const slam::RbpfOptions options = options_from(a);
+  // --config is a HybridSLAM YAML with --method hybrid, read in run_slam_hybrid.
+  const slam::RbpfOptions options = a.method == "hybrid" ? slam::RbpfOptions{} : options_from(a);
   slam::LogReadOptions read;
   read.skip_bad_lines = a.skip_bad_lines;
   spdlog::info("reading {}", a.log);
@@ -99,6 +102,7 @@ int run_slam(const SlamArgs& a) {
   }
   if (log.scans.empty()) throw std::runtime_error(a.log + ": no laser scans in the log");
   if (a.max_scans > 0 && log.scans.size() > a.max_scans) log.scans.resize(a.max_scans);
+  if (a.method == "hybrid") return run_slam_hybrid(log, {a.out, a.config, a.particles, a.seed});
   spdlog::info("{} scans, {} beams each; {} particles", log.scans.size(),
                log.scans.front().ranges.size(), options.particles);
   slam::Rbpf filter(options);
@@ -131,6 +135,8 @@ Run add_slam_command(CLI::App& app) {
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--max-scans", args->max_scans, "stop after this many scans (0 = all)");
   app.add_flag("--skip-bad-lines", args->skip_bad_lines, "count and skip malformed log lines");
+  app.add_option("--method", args->method, "rbpf (grid RBPF) or hybrid (HybridSLAM landmarks; --config takes a hybrid YAML)")
+      ->check(CLI::IsMember({"rbpf", "hybrid"}))->capture_default_str();
   return [args] { return run_slam(*args); };
 }
 
