@@ -107,11 +107,17 @@ FusionReport GlobalMap::fuse(const GaussianMap& local) {
 }
 
 // JCBB between the new features (slots first_new..) and the old ones (slots 0..first_new-2):
-// the innovation of a pair is the difference theta_new - theta_old, with R = 0.
+// the innovation of a pair is the difference theta_new - theta_old. Deviation: the test adds
+// association_sigma^2 I to its covariance (the fusion itself stays zero-noise, eq. 10). A
+// FastSLAM local map is overconfident about its features relative to its vehicle (the
+// particles lose path diversity within a local map); without the floor, copies of one
+// feature a few centimetres apart failed the test and the map filled with duplicates.
 std::vector<int> GlobalMap::associate(std::size_t first_new, std::size_t count, FusionReport& report) const {
   const std::size_t old_count = first_new - 1;
   const Eigen::Index n = mean_.size();
   const double gate = chi2_quantile(2, options_.jcbb_confidence);
+  const double floor = options_.association_sigma * options_.association_sigma;
+  const Eigen::Matrix2d noise = floor * Eigen::Matrix2d::Identity();
   std::vector<PairingCandidate> candidates;
   for (std::size_t i = 0; i < count; ++i) {
     const Eigen::Index a = static_cast<Eigen::Index>(3 + 2 * (first_new + i) + 1);
@@ -119,9 +125,9 @@ std::vector<int> GlobalMap::associate(std::size_t first_new, std::size_t count, 
       const Eigen::Index b = static_cast<Eigen::Index>(3 + 2 * j);
       const Eigen::Vector2d nu = mean_.segment<2>(a) - mean_.segment<2>(b);
       const Eigen::Matrix2d s = covariance_.block<2, 2>(a, a) + covariance_.block<2, 2>(b, b) -
-                                covariance_.block<2, 2>(a, b) - covariance_.block<2, 2>(b, a);
+                                covariance_.block<2, 2>(a, b) - covariance_.block<2, 2>(b, a) + noise;
       if (nu.dot(s.ldlt().solve(nu)) > gate) continue;
-      PairingCandidate c{static_cast<int>(i), static_cast<int>(j), nu, Eigen::MatrixXd::Zero(2, n), Eigen::Matrix2d::Zero()};
+      PairingCandidate c{static_cast<int>(i), static_cast<int>(j), nu, Eigen::MatrixXd::Zero(2, n), noise};
       c.jacobian.block<2, 2>(0, a).setIdentity();
       c.jacobian.block<2, 2>(0, b) = -Eigen::Matrix2d::Identity();
       candidates.push_back(std::move(c));

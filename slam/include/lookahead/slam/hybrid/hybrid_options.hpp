@@ -59,6 +59,8 @@ struct FusionOptions {
   /// its own moment-matched Gaussian (a Gaussian puts 1 % there).
   double outlier_weight = 0.05;
   double jcbb_confidence = 0.99;  ///< joint compatibility test level
+  /// Std added to each pair's difference in the association test only [m] (see global_map.cpp).
+  double association_sigma = 0.15;
   int jcbb_max_nodes = 20000;     ///< cap on the branch-and-bound search
 };
 
