@@ -44,7 +44,8 @@ TEST(HybridCli, MapsTheFirstScansOfFr101AndScoresThem) {
 
 TEST(HybridCli, SimulationFiguresAndABadConfig) {
   const fs::path out = temp_dir("sim");
-  std::ofstream(out / "small.yaml") << "simulation:\n  world_size: 50\n  features: 20\n  inset: 8\n"
+  // The paper's feature density (35 in 120 m x 120 m): 6 features in 50 m x 50 m.
+  std::ofstream(out / "small.yaml") << "simulation:\n  world_size: 50\n  features: 6\n  inset: 8\n"
                                        "  loop_overlap: 10\nfastslam:\n  particles: 30\n";
   ASSERT_EQ(run("hybrid-sim --no-study --config " + (out / "small.yaml").string() + " --out " + out.string(), out / "log.txt"), 0);
   for (const char* f : {"fig3_trace_compass.png", "fig4_trace.png", "nees.png", "world.png", "run.json"}) {
