@@ -16,5 +16,6 @@ Run add_config_command(CLI::App& app);
 Run add_explore_command(CLI::App& app);
 Run add_study_command(CLI::App& app);
 Run add_predict_command(CLI::App& app);
+Run add_hybrid_sim_command(CLI::App& app);
 
 }  // namespace lookahead::app

@@ -21,6 +21,7 @@
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
 #include "slam_segslam.hpp"
+#include "slam_hybrid.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -104,7 +105,8 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
 }
 
 int run_slam(const SlamArgs& a) {
-  const slam::RbpfOptions options = options_from(a);
+  // --config is a HybridSLAM YAML with --method hybrid, read in run_slam_hybrid.
+  const slam::RbpfOptions options = a.method == "hybrid" ? slam::RbpfOptions{} : options_from(a);
   slam::LogReadOptions read;
   read.skip_bad_lines = a.skip_bad_lines;
   spdlog::info("reading {}", a.log);
@@ -114,6 +116,7 @@ int run_slam(const SlamArgs& a) {
   }
   if (log.scans.empty()) throw std::runtime_error(a.log + ": no laser scans in the log");
   if (a.max_scans > 0 && log.scans.size() > a.max_scans) log.scans.resize(a.max_scans);
+  if (a.method == "hybrid") return run_slam_hybrid(log, {a.out, a.config, a.particles, a.seed});
   spdlog::info("{} scans, {} beams each; {} particles", log.scans.size(),
                log.scans.front().ranges.size(), options.particles);
   slam::Rbpf filter(options);
@@ -150,8 +153,10 @@ Run add_slam_command(CLI::App& app) {
   app.add_option("--max-scans", args->max_scans, "stop after this many scans (0 = all)");
   app.add_flag("--skip-bad-lines", args->skip_bad_lines, "count and skip malformed log lines");
   app.add_flag("--predict", args->predict, "P-SLAM: predict the region ahead and use it in the weights");
-  app.add_option("--method", args->method, "rbpf or segslam (segmented RBPF with submaps)")
-      ->check(CLI::IsMember({"rbpf", "segslam"}))->capture_default_str();
+  app.add_option("--method", args->method,
+                 "rbpf (grid RBPF), segslam (segmented RBPF with submaps) or hybrid (HybridSLAM landmarks; "
+                 "--config then takes a hybrid YAML)")
+      ->check(CLI::IsMember({"rbpf", "segslam", "hybrid"}))->capture_default_str();
   app.add_option("--segslam-config", args->segslam_config, "SegSLAM YAML options (see config/segslam/default.yaml)");
   app.add_option("--map-samples", args->map_samples, "SegSLAM: map samples of the minimum-entropy search");
   return [args] {

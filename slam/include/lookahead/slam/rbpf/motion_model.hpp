@@ -33,9 +33,11 @@ class OdometryMotionModel {
   [[nodiscard]] Pose2 sample(const Pose2& previous, const Pose2& u, std::mt19937_64& rng) const;
   /// log p(x_t | x_{t-1}, u) up to a constant that is the same for every x_t.
   [[nodiscard]] double log_density(const Pose2& previous, const Pose2& u, const Pose2& x) const;
+  /// The standard deviations of the noise on u's three components (the Gaussian filters of
+  /// slam/hybrid use them as the control covariance).
+  void sigmas(const Pose2& u, double& sx, double& sy, double& st) const;
 
  private:
-  void sigmas(const Pose2& u, double& sx, double& sy, double& st) const;
   MotionModelOptions o_;
 };
 

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// YAML configuration of HybridSLAM: the filter, the simulation and the study, in one file
+// (config/hybrid/default.yaml). Unknown keys and bad values are ParseErrors naming the
+// file, the line, the key and the value.
+#pragma once
+
+#include <string>
+
+#include "lookahead/slam/hybrid/hybrid_options.hpp"
+#include "lookahead/slam/hybrid/simulation.hpp"
+#include "lookahead/slam/hybrid/study.hpp"
+
+namespace lookahead::slam::hybrid {
+
+struct HybridConfig {
+  HybridOptions filter;
+  SimulationOptions simulation;
+  StudyOptions study;
+};
+
+HybridConfig load_hybrid_config(const std::string& path, const HybridConfig& base = {});
+HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& source, const HybridConfig& base = {});
+/// Every option with its default and unit (`lookahead hybrid-sim --dump-config`).
+std::string dump_hybrid_config(const HybridConfig& config);
+
+}  // namespace lookahead::slam::hybrid

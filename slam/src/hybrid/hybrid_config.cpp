@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/hybrid/hybrid_config.hpp"
+
+#include <fmt/ranges.h>
+
+#include <stdexcept>
+
+#include "lookahead/slam/config/yaml_sections.hpp"
+#include "lookahead/slam/hybrid/feature_existence.hpp"
+#include "lookahead/slam/io/parse_error.hpp"
+
+namespace lookahead::slam::hybrid {
+namespace {
+
+template <typename V>
+void visit_sections(HybridConfig& c, V&& v) {
+  HybridOptions& f = c.filter;
+  v.section("sensor");
+  v("max_range", f.sensor.max_range, "range of the range-bearing sensor [m]");
+  v("sigma_range", f.sensor.sigma_range, "range noise std [m]");
+  v("sigma_bearing", f.sensor.sigma_bearing, "bearing noise std [rad]");
+  v.section("existence");
+  v("alpha", f.existence.alpha, "p(detection | feature in view) (study levels override)");
+  v("beta", f.existence.beta, "p(false alarm | feature in view) (study levels override)");
+  v("prior", f.existence.prior, "existence before the creating observation");
+  v("fuse_threshold", f.existence.fuse_threshold, "only features above are fused");
+  v("cull_threshold", f.existence.cull_threshold, "features below are deleted");
+  v("view_margin", f.existence.view_margin, "missed detections count this far inside the range [m]");
+  v("clamp", f.existence.clamp, "alpha, beta clamped into [clamp, 1 - clamp]");
+  v.section("process_floor");
+  v("xy", f.process_floor.xy, "least position noise per step [m/sqrt(s)]");
+  v("theta", f.process_floor.theta, "least heading noise per step [rad/sqrt(s)]");
+  v.section("fastslam");
+  v("particles", f.fastslam.particles, "particles P");
+  v("resample_threshold", f.fastslam.resample_threshold, "resample when N_eff < this * P");
+  v("new_feature_likelihood", f.fastslam.new_feature_likelihood, "likelihood of a new feature [1/(m rad)]");
+  v("candidate_radius", f.fastslam.candidate_radius, "features considered within [m]");
+  v("gate_chi2", f.fastslam.gate_chi2, "individual association gate (2 dof)");
+  v("seed", f.fastslam.seed, "seed of the filter's draws (single runs)");
+  v.section("fusion");
+  v("period", f.fusion.period, "local map age at fusion [s]");
+  v("adaptive", f.fusion.adaptive, "delay fusion while unsettled (beyond the paper)");
+  v("max_delay", f.fusion.max_delay, "longest delay [s]");
+  v("disputed_fraction", f.fusion.disputed_fraction, "a feature held by a weight in (d, 1-d) is disputed");
+  v("outlier_weight", f.fusion.outlier_weight, "multi-modal when more weight lies outside the 99% ellipse");
+  v("jcbb_confidence", f.fusion.jcbb_confidence, "joint compatibility test level");
+  v("jcbb_max_nodes", f.fusion.jcbb_max_nodes, "cap on the JCBB search");
+  v("association_sigma", f.fusion.association_sigma, "std added to pair differences in the association test [m]");
+  SimulationOptions& s = c.simulation;
+  v.section("simulation");
+  v("world_size", s.world_size, "side of the square world [m]");
+  v("features", s.features, "point features per world");
+  v("speed", s.speed, "linear velocity [m/s]");
+  v("max_turn_rate", s.max_turn_rate, "[rad/s]");
+  v("steering_gain", s.steering_gain, "turn rate per radian of heading error [1/s]");
+  v("dt", s.dt, "control and observation period [s]");
+  v("inset", s.inset, "loop distance from the border [m]");
+  v("inset_jitter", s.inset_jitter, "random inward shift of waypoints [m]");
+  v("loop_overlap", s.loop_overlap, "travel past the start [m]");
+  v("velocity_noise", s.velocity_noise, "std of v as a fraction of v");
+  v("turn_noise", s.turn_noise, "std of omega as a fraction of omega");
+  v("compass", s.compass, "heading known exactly (Fig. 3)");
+  StudyOptions& t = c.study;
+  v.section("study");
+  v("alphas", t.alphas, "clutter levels: p(detection)");
+  v("betas", t.betas, "clutter levels: p(false alarm)");
+  v("trials", t.trials, "trials per filter and level");
+  v("worlds", t.worlds, "distinct worlds");
+  v("seed", t.seed, "seed of worlds, noise and filters");
+  v("threads", t.threads, "0 = all cores");
+  v("failure_sigma", t.failure_sigma, "failure: truth beyond this many std ...");
+  v("failure_iterations", t.failure_iterations, "... for more than this many iterations");
+}
+
+}  // namespace
+
+HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& source, const HybridConfig& base) {
+  const YAML::Node root = slam::config::parse_sections(yaml, source);
+  HybridConfig c = base;
+  if (root.IsNull()) return c;
+  slam::config::SectionLoader loader(root, source);
+  visit_sections(c, loader);
+  loader.reject_unknown();
+  try {
+    const FeatureExistence check(c.filter.existence);
+    if (c.filter.fastslam.particles < 1) throw std::invalid_argument("fastslam.particles must be >= 1");
+    if (!(c.filter.fusion.period > 0.0)) throw std::invalid_argument("fusion.period must be > 0");
+    if (c.study.alphas.size() != c.study.betas.size()) throw std::invalid_argument("study.alphas and study.betas differ in length");
+    if (!(c.simulation.dt > 0.0)) throw std::invalid_argument("simulation.dt must be > 0");
+  } catch (const std::invalid_argument& e) {
+    throw ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+  }
+  return c;
+}
+
+HybridConfig load_hybrid_config(const std::string& path, const HybridConfig& base) {
+  return parse_hybrid_config(slam::config::read_text_file(path), path, base);
+}
+
+std::string dump_hybrid_config(const HybridConfig& config) {
+  HybridConfig copy = config;
+  slam::config::SectionDumper d;
+  visit_sections(copy, d);
+  return d.str();
+}
+
+}  // namespace lookahead::slam::hybrid

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/hybrid/jcbb.hpp"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <stdexcept>
+
+namespace lookahead::slam::hybrid {
+namespace {
+
+double normal_quantile(double p) {
+  // Acklam's rational approximation is overkill here: the levels used are fixed.
+  if (p >= 0.999) return 3.090;
+  if (p >= 0.995) return 2.576;
+  if (p >= 0.99) return 2.326;
+  if (p >= 0.975) return 1.960;
+  if (p >= 0.95) return 1.645;
+  return 1.282;
+}
+
+class Search {
+ public:
+  Search(int items, const std::vector<PairingCandidate>& c, const Eigen::MatrixXd& p,
+         double confidence, int max_nodes)
+      : items_(items), candidates_(c), p_(p), confidence_(confidence), max_nodes_(max_nodes),
+        by_item_(static_cast<std::size_t>(items)) {
+    for (std::size_t k = 0; k < c.size(); ++k) by_item_[static_cast<std::size_t>(c[k].item)].push_back(k);
+    best_.target_of.assign(static_cast<std::size_t>(items), -1);
+  }
+
+  JcbbResult run() {
+    std::vector<std::size_t> chosen;
+    recurse(0, chosen);
+    return best_;
+  }
+
+ private:
+  // Joint NIS of the chosen candidates; infinity when not jointly compatible.
+  double joint_nis(const std::vector<std::size_t>& chosen) const {
+    const Eigen::Index m = 2 * static_cast<Eigen::Index>(chosen.size());
+    Eigen::VectorXd nu(m);
+    Eigen::MatrixXd h(m, p_.cols());
+    Eigen::MatrixXd r = Eigen::MatrixXd::Zero(m, m);
+    for (std::size_t k = 0; k < chosen.size(); ++k) {
+      const PairingCandidate& c = candidates_[chosen[k]];
+      const Eigen::Index at = 2 * static_cast<Eigen::Index>(k);
+      nu.segment<2>(at) = c.nu;
+      h.middleRows(at, 2) = c.jacobian;
+      r.block<2, 2>(at, at) = c.noise;
+    }
+    const Eigen::MatrixXd s = h * p_ * h.transpose() + r;
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(s);
+    const double nis = nu.dot(ldlt.solve(nu));
+    return nis <= chi2_quantile(static_cast<int>(m), confidence_) ? nis : INFINITY;
+  }
+
+  void recurse(int item, std::vector<std::size_t>& chosen) {
+    if (++nodes_ > max_nodes_) {
+      best_.search_truncated = true;
+      return;
+    }
+    const int have = static_cast<int>(chosen.size());
+    if (item == items_) {
+      const double nis = have == 0 ? 0.0 : joint_nis(chosen);
+      if (have > best_.pairings || (have == best_.pairings && nis < best_.nis)) record(chosen, nis);
+      return;
+    }
+    for (std::size_t k : by_item_[static_cast<std::size_t>(item)]) {
+      if (target_taken(chosen, candidates_[k].target)) continue;
+      chosen.push_back(k);
+      if (std::isfinite(joint_nis(chosen))) recurse(item + 1, chosen);
+      chosen.pop_back();
+    }
+    // Leaving this item unpaired can only help if the rest could still beat the best.
+    if (have + (items_ - item - 1) >= best_.pairings) recurse(item + 1, chosen);
+  }
+
+  bool target_taken(const std::vector<std::size_t>& chosen, int target) const {
+    for (std::size_t k : chosen) {
+      if (candidates_[k].target == target) return true;
+    }
+    return false;
+  }
+
+  void record(const std::vector<std::size_t>& chosen, double nis) {
+    best_.target_of.assign(static_cast<std::size_t>(items_), -1);
+    for (std::size_t k : chosen) best_.target_of[static_cast<std::size_t>(candidates_[k].item)] = candidates_[k].target;
+    best_.pairings = static_cast<int>(chosen.size());
+    best_.nis = nis;
+  }
+
+  int items_;
+  const std::vector<PairingCandidate>& candidates_;
+  const Eigen::MatrixXd& p_;
+  double confidence_;
+  int max_nodes_;
+  int nodes_ = 0;
+  std::vector<std::vector<std::size_t>> by_item_;
+  JcbbResult best_;
+};
+
+}  // namespace
+
+double chi2_quantile(int dof, double confidence) {
+  if (dof < 1) throw std::invalid_argument("chi2_quantile: dof must be >= 1");
+  const double k = dof, z = normal_quantile(confidence);
+  const double a = 2.0 / (9.0 * k);
+  return k * std::pow(1.0 - a + z * std::sqrt(a), 3);
+}
+
+JcbbResult jcbb(int items, const std::vector<PairingCandidate>& candidates,
+                const Eigen::MatrixXd& covariance, double confidence, int max_nodes) {
+  return Search(items, candidates, covariance, confidence, max_nodes).run();
+}
+
+}  // namespace lookahead::slam::hybrid

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/hybrid/submap_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace lookahead::slam::hybrid {
+
+SubmapFilter::SubmapFilter(std::unique_ptr<LocalFrontEnd> front_end, const HybridOptions& options,
+                           const Pose2& start, bool fuse)
+    : front_(std::move(front_end)), options_(options), global_(options.fusion, start), fuse_(fuse) {
+  if (fuse && !(options.fusion.period > 0.0)) throw std::invalid_argument("fusion.period must be > 0");
+}
+
+void SubmapFilter::step(const MotionStep& control, const std::vector<RangeBearing>& observations) {
+  MotionStep c = control;
+  const double root_dt = std::sqrt(std::max(control.dt, 0.0));
+  const ProcessNoiseFloor& f = options_.process_floor;
+  c.sigma = c.sigma.cwiseMax(Vector3(f.xy * root_dt, f.xy * root_dt, f.theta * root_dt));
+  front_->predict(c);
+  front_->observe(observations);
+  age_ += control.dt;
+  if (fuse_ && fusion_due()) fuse_now();
+}
+
+// Sec. 5.1: fuse every `period` seconds. Adaptive rule (beyond the paper, its sec. 6
+// suggestion): past the period, wait while the front-end is unsettled, up to max_delay.
+bool SubmapFilter::fusion_due() {
+  const FusionOptions& f = options_.fusion;
+  if (age_ + 1e-9 < f.period) return false;
+  if (!f.adaptive || age_ + 1e-9 >= f.period + f.max_delay) return true;
+  const bool wait = front_->unsettled();
+  if (wait && !delaying_) ++delayed_;
+  delaying_ = wait;
+  return !wait;
+}
+
+void SubmapFilter::fuse_now() {
+  const GaussianMap local = front_->to_gaussian(options_.existence.fuse_threshold);
+  associated_ += global_.fuse(local).associated;
+  front_->restart();
+  age_ = 0.0;
+  delaying_ = false;
+  ++fusions_;
+}
+
+void SubmapFilter::finish() {
+  if (fuse_ && age_ > 0.0) fuse_now();
+}
+
+PoseGaussian SubmapFilter::vehicle() const { return global_.compose(front_->vehicle()); }
+
+std::vector<MapFeature> SubmapFilter::feature_map() {
+  std::vector<MapFeature> out;
+  if (fuse_) {
+    for (std::size_t k = 0; k < global_.features(); ++k) {
+      out.push_back({global_.feature(k), global_.feature_covariance(k)});
+    }
+    return out;
+  }
+  // Pure FastSLAM: its one local map, brought to the global frame of the start pose.
+  const GaussianMap local = front_->to_gaussian(options_.existence.fuse_threshold);
+  const LocalToGlobal g = local_to_global(global_.origin(), local.mean);
+  const Eigen::MatrixXd cov = g.d_local * local.covariance * g.d_local.transpose();
+  for (std::size_t k = 0; k < local.features(); ++k) {
+    const Eigen::Index at = 3 + 2 * static_cast<Eigen::Index>(k);
+    out.push_back({g.value.segment<2>(at), cov.block<2, 2>(at, at)});
+  }
+  return out;
+}
+
+}  // namespace lookahead::slam::hybrid

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/hybrid/hybrid_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "lookahead/slam/io/parse_error.hpp"
+
+namespace lookahead::slam::hybrid {
+namespace {
+
+TEST(HybridConfig, DumpReadsBackToTheSameOptions) {
+  HybridConfig c;
+  c.filter.fastslam.particles = 123;
+  c.study.alphas = {0.9, 0.5};
+  c.study.betas = {0.01, 0.03};
+  const HybridConfig back = parse_hybrid_config(dump_hybrid_config(c), "dump");
+  EXPECT_EQ(dump_hybrid_config(back), dump_hybrid_config(c));
+  EXPECT_EQ(back.filter.fastslam.particles, 123);
+  EXPECT_EQ(back.study.alphas, (std::vector<double>{0.9, 0.5}));
+}
+
+TEST(HybridConfig, ShippedDefaultsMatchTheCode) {
+  std::ifstream in(std::string(LOOKAHEAD_SOURCE_DIR) + "/config/hybrid/default.yaml");
+  ASSERT_TRUE(in) << "config/hybrid/default.yaml missing";
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "# lookahead HybridSLAM defaults (lookahead hybrid-sim --dump-config)\n" + dump_hybrid_config({}))
+      << "regenerate with: lookahead hybrid-sim --dump-config > config/hybrid/default.yaml";
+}
+
+TEST(HybridConfig, BadInputNamesFileLineKeyAndValue) {
+  try {
+    parse_hybrid_config("fusion:\n  period: 10\n  perod: 5\n", "h.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "h.yaml");
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "fusion.perod");
+  }
+  try {
+    parse_hybrid_config("fastslam:\n  particles: many\n", "h.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.value(), "many");
+  }
+  EXPECT_THROW(parse_hybrid_config("existence:\n  alpha: 1.5\n", "h.yaml"), ParseError);
+  EXPECT_THROW(parse_hybrid_config("study:\n  alphas: [1.0]\n  betas: [0.0, 0.1]\n", "h.yaml"), ParseError);
+}
+
+}  // namespace
+}  // namespace lookahead::slam::hybrid
