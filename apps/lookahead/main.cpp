@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add("explore", "explore a simulated building (default: the built-in office)", lookahead::app::add_explore_command);
   add("study", "run worlds x strategies x seeds of missions: tables, t-tests, plots", lookahead::app::add_study_command);
   add("slam", "map a laser log (CARMEN or MRPT rawlog) with the RBPF", lookahead::app::add_slam_command);
+  add("slam3d", "3D mapping with the octree RBPF: simulated garage, geb079, or 3DTK scans", lookahead::app::add_slam3d_command);
   add("eval", "relative pose error of a trajectory; entropy of a map", lookahead::app::add_eval_command);
   add("config", "print the documented default configuration", lookahead::app::add_config_command);
   CLI11_PARSE(app, argc, argv);

@@ -30,12 +30,13 @@ Node* make_private(NodeBase*& slot, int level) {
   return static_cast<Node*>(slot);
 }
 
-const Brick* find_brick(const InnerNode* root, int x, int y, int z) {
-  const NodeBase* n = root;
-  for (int level = 0; level < kInnerLevels && n; ++level) {
-    n = static_cast<const InnerNode*>(n)->child[octree_detail::child_index(x, y, z, level)];
+/// The node at `to_level` on the path to (x, y, z), starting from `node` at `from_level`;
+/// null where the path ends early (nothing observed there).
+const NodeBase* descend(const NodeBase* node, int from_level, int to_level, int x, int y, int z) {
+  for (int level = from_level; level < to_level && node; ++level) {
+    node = static_cast<const InnerNode*>(node)->child[octree_detail::child_index(x, y, z, level)];
   }
-  return static_cast<const Brick*>(n);
+  return node;
 }
 
 template <typename Visit>
@@ -183,10 +184,15 @@ std::size_t EvidenceOctree::distinct_bytes(const std::vector<const EvidenceOctre
 const Brick* OctreeReader::brick_at(int x, int y, int z) {
   const int bx = x >> octree_detail::kBrickBits, by = y >> octree_detail::kBrickBits,
             bz = z >> octree_detail::kBrickBits;
-  if (bx != cached_x_ || by != cached_y_ || bz != cached_z_) {
-    cached_ = find_brick(map_->root_, x, y, z);
-    cached_x_ = bx, cached_y_ = by, cached_z_ = bz;
+  if (bx == cached_x_ && by == cached_y_ && bz == cached_z_) return cached_;
+  const int ax = x >> octree_detail::kAnchorShift, ay = y >> octree_detail::kAnchorShift,
+            az = z >> octree_detail::kAnchorShift;
+  if (ax != anchor_x_ || ay != anchor_y_ || az != anchor_z_) {
+    anchor_ = static_cast<const InnerNode*>(descend(map_->root_, 0, octree_detail::kAnchorLevel, x, y, z));
+    anchor_x_ = ax, anchor_y_ = ay, anchor_z_ = az;
   }
+  cached_ = static_cast<const Brick*>(descend(anchor_, octree_detail::kAnchorLevel, kInnerLevels, x, y, z));
+  cached_x_ = bx, cached_y_ = by, cached_z_ = bz;
   return cached_;
 }
 
@@ -212,10 +218,21 @@ Brick& OctreeWriter::brick_at(const OctreeKey& k) {
   const int bx = k.x >> octree_detail::kBrickBits, by = k.y >> octree_detail::kBrickBits,
             bz = k.z >> octree_detail::kBrickBits;
   if (cached_ && bx == cached_x_ && by == cached_y_ && bz == cached_z_) return *cached_;
-  NodeBase* root = map_->root_;
-  InnerNode* node = make_private<InnerNode>(root, 0);
-  map_->root_ = node;
-  for (int level = 0; level + 1 < kInnerLevels; ++level) {
+  const int ax = k.x >> octree_detail::kAnchorShift, ay = k.y >> octree_detail::kAnchorShift,
+            az = k.z >> octree_detail::kAnchorShift;
+  if (!anchor_ || ax != anchor_x_ || ay != anchor_y_ || az != anchor_z_) {
+    NodeBase* root = map_->root_;
+    InnerNode* node = make_private<InnerNode>(root, 0);
+    map_->root_ = node;
+    for (int level = 0; level < octree_detail::kAnchorLevel; ++level) {
+      node = make_private<InnerNode>(node->child[octree_detail::child_index(k.x, k.y, k.z, level)],
+                                     level + 1);
+    }
+    anchor_ = node;
+    anchor_x_ = ax, anchor_y_ = ay, anchor_z_ = az;
+  }
+  InnerNode* node = anchor_;
+  for (int level = octree_detail::kAnchorLevel; level + 1 < kInnerLevels; ++level) {
     node = make_private<InnerNode>(node->child[octree_detail::child_index(k.x, k.y, k.z, level)],
                                    level + 1);
   }

@@ -85,8 +85,9 @@ class EvidenceOctree {
   octree_detail::InnerNode* root_;
 };
 
-/// Fast repeated reads of one map: remembers the last brick, so neighbouring queries skip
-/// the descent from the root. Valid while the map is not written.
+/// Fast repeated reads of one map: remembers the last brick and the last 32^3-voxel
+/// subtree, so a query near the previous one descends 3 levels or none instead of 14.
+/// Valid while the map is not written.
 class OctreeReader {
  public:
   explicit OctreeReader(const EvidenceOctree& map) : map_(&map) {}
@@ -99,6 +100,8 @@ class OctreeReader {
   const EvidenceOctree* map_;
   int cached_x_ = -1, cached_y_ = -1, cached_z_ = -1;
   const octree_detail::Brick* cached_ = nullptr;
+  int anchor_x_ = -1, anchor_y_ = -1, anchor_z_ = -1;
+  const octree_detail::InnerNode* anchor_ = nullptr;  // may be null: nothing known there
 };
 
 /// A batch of writes to one map: remembers the last brick it made private, so writes to
@@ -116,6 +119,8 @@ class OctreeWriter {
   float hit_, miss_, min_, max_;
   int cached_x_ = -1, cached_y_ = -1, cached_z_ = -1;
   octree_detail::Brick* cached_ = nullptr;
+  int anchor_x_ = -1, anchor_y_ = -1, anchor_z_ = -1;
+  octree_detail::InnerNode* anchor_ = nullptr;  // made private by this batch
 };
 
 }  // namespace lookahead::slam
