@@ -52,7 +52,7 @@ Input read_input(const Slam3dArgs& a, const slam::Slam3dOptions& o) {
     in.world = a.input == "garage" ? slam::make_garage_world(static_cast<std::uint64_t>(a.data_seed), o.world_resolution)
                                    : slam::load_geb079_world(a.geb079);
     std::optional<ProgressBar> bar;  // the simulator knows the sweep count once it starts
-    in.log = slam::simulate_cave_crawler(*in.world, o.robot, static_cast<std::uint64_t>(a.data_seed),
+    in.log = slam::simulate_cave_crawler(*in.world, o.robot, static_cast<std::uint64_t>(a.data_seed), a.max_sweeps,
                                          [&](std::size_t done, std::size_t total) {
                                            if (!bar) bar.emplace("simulate", total);
                                            bar->update(done);
@@ -66,6 +66,13 @@ Input read_input(const Slam3dArgs& a, const slam::Slam3dOptions& o) {
   if (a.max_sweeps > 0 && in.log.sweeps.size() > a.max_sweeps) in.log.sweeps.resize(a.max_sweeps);
   if (in.log.sweeps.empty()) throw std::runtime_error(a.input + ": no sweeps");
   return in;
+}
+
+/// A short name for titles: the folder's own name for a 3DTK folder.
+std::string input_name(const std::string& input) {
+  std::filesystem::path p = std::filesystem::path(input).lexically_normal();
+  if (p.filename().empty()) p = p.parent_path();
+  return p.filename().string();
 }
 
 std::vector<slam::Pose2> top_down(const std::vector<slam::Pose3>& poses) {
@@ -111,7 +118,7 @@ void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& fil
   paths.push_back({top_down(odometry), {230, 140, 20}, "dead reckoning", 1});
   paths.push_back({top_down(estimate), {200, 30, 30}, "RBPF estimate (best particle)", 2});
   slam::write_map_picture(a.out + "/trajectory.png", slam::top_view(map), paths,
-                          fmt::format("slam3d {} - rbpf, {} particles (top view)", a.input, filter.particles().size()));
+                          fmt::format("slam3d {} - rbpf, {} particles (top view)", input_name(a.input), filter.particles().size()));
   std::ofstream traj(a.out + "/trajectory.txt");
   traj << "# t x y z roll pitch yaw (best particle, one line per sweep)\n";
   for (std::size_t i = 0; i < estimate.size(); ++i) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/octree/ray_insertion.hpp"
 
+#include "lookahead/slam/octree/voxel_walk.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -40,32 +42,16 @@ void trace_voxels(const OctreeGrid& grid, const Eigen::Vector3d& from, const Eig
   if (!start || !stop || *start == *stop) return;
   const Eigen::Vector3d delta = to - from;
   const double length = delta.norm();
-  const Eigen::Vector3d dir = delta / length;
-  const double res = grid.resolution();
-  int key[3] = {start->x, start->y, start->z};
-  const int goal[3] = {stop->x, stop->y, stop->z};
-  int step[3];
-  double t_next[3], t_delta[3];  // distance along the ray to the next boundary; per voxel
-  for (int a = 0; a < 3; ++a) {
-    step[a] = dir[a] > 0.0 ? 1 : (dir[a] < 0.0 ? -1 : 0);
-    if (step[a] == 0) {
-      t_next[a] = t_delta[a] = std::numeric_limits<double>::infinity();
-      continue;
-    }
-    const double boundary = grid.axis_centre(key[a]) + 0.5 * res * step[a];
-    t_next[a] = (boundary - from[a]) / dir[a];
-    t_delta[a] = res / std::abs(dir[a]);
-  }
+  VoxelWalk walk(grid, from, delta / length);
+  const long goal[3] = {stop->x, stop->y, stop->z};
   // At most one voxel per boundary crossed; the bound guards against rounding at the goal.
-  const int max_steps = std::abs(goal[0] - key[0]) + std::abs(goal[1] - key[1]) + std::abs(goal[2] - key[2]);
-  for (int i = 0; i < max_steps; ++i) {
-    out.push_back({static_cast<std::uint16_t>(key[0]), static_cast<std::uint16_t>(key[1]),
-                   static_cast<std::uint16_t>(key[2])});
-    const int a = t_next[0] < t_next[1] ? (t_next[0] < t_next[2] ? 0 : 2) : (t_next[1] < t_next[2] ? 1 : 2);
-    if (t_next[a] > length) break;
-    key[a] += step[a];
-    t_next[a] += t_delta[a];
-    if (key[0] == goal[0] && key[1] == goal[1] && key[2] == goal[2]) break;
+  const long max_steps = std::abs(goal[0] - start->x) + std::abs(goal[1] - start->y) + std::abs(goal[2] - start->z);
+  for (long i = 0; i < max_steps; ++i) {
+    out.push_back({static_cast<std::uint16_t>(walk.key(0)), static_cast<std::uint16_t>(walk.key(1)),
+                   static_cast<std::uint16_t>(walk.key(2))});
+    if (walk.exit_distance() > length) break;
+    walk.step();
+    if (walk.key(0) == goal[0] && walk.key(1) == goal[1] && walk.key(2) == goal[2]) break;
   }
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -100,6 +101,7 @@ void CaveCrawlerOptions::validate() const {
 }
 
 RangeLog3 simulate_cave_crawler(const World3& world, const CaveCrawlerOptions& o, std::uint64_t seed,
+                                std::size_t max_sweeps,
                                 const std::function<void(std::size_t, std::size_t)>& progress) {
   o.validate();
   const double dt = o.laser.sweep_period / o.laser.lines_per_sweep;
@@ -110,7 +112,8 @@ RangeLog3 simulate_cave_crawler(const World3& world, const CaveCrawlerOptions& o
   std::mt19937_64 rng(seed);
   DeadReckoning dead_reckoning(o.dead_reckoning, steps.front().pose, rng());
   const auto per_sweep = static_cast<std::size_t>(o.laser.lines_per_sweep);
-  const std::size_t sweeps = steps.size() / per_sweep;
+  std::size_t sweeps = steps.size() / per_sweep;
+  if (max_sweeps > 0) sweeps = std::min(sweeps, max_sweeps);
   std::vector<Line> lines;
   for (std::size_t i = 0; i < sweeps * per_sweep; ++i) {
     const double phi = M_PI * static_cast<double>(i % per_sweep) / static_cast<double>(per_sweep);
