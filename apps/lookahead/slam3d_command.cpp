@@ -49,14 +49,17 @@ Input read_input(const Slam3dArgs& a, const slam::Slam3dOptions& o) {
   Input in;
   if (a.input == "garage" || a.input == "geb079") {
     spdlog::info("building the {} world", a.input);
-    in.world = a.input == "garage" ? slam::make_garage_world(static_cast<std::uint64_t>(a.data_seed), o.world_resolution)
-                                   : slam::load_geb079_world(a.geb079);
+    in.world =
+        a.input == "garage"
+            ? slam::make_garage_world(static_cast<std::uint64_t>(a.data_seed), o.world_resolution)
+            : slam::load_geb079_world(a.geb079);
     std::optional<ProgressBar> bar;  // the simulator knows the sweep count once it starts
-    in.log = slam::simulate_cave_crawler(*in.world, o.robot, static_cast<std::uint64_t>(a.data_seed), a.max_sweeps,
-                                         [&](std::size_t done, std::size_t total) {
-                                           if (!bar) bar.emplace("simulate", total);
-                                           bar->update(done);
-                                         });
+    in.log =
+        slam::simulate_cave_crawler(*in.world, o.robot, static_cast<std::uint64_t>(a.data_seed),
+                                    a.max_sweeps, [&](std::size_t done, std::size_t total) {
+                                      if (!bar) bar.emplace("simulate", total);
+                                      bar->update(done);
+                                    });
     if (bar) bar->finish();
   } else if (std::filesystem::is_directory(a.input)) {
     in.log = slam::read_3dtk_folder(a.input, o.threedtk);
@@ -77,7 +80,8 @@ std::string input_name(const std::string& input) {
 
 std::vector<slam::Pose2> top_down(const std::vector<slam::Pose3>& poses) {
   std::vector<slam::Pose2> out;
-  for (const slam::Pose3& p : poses) out.push_back({p.translation().x(), p.translation().y(), slam::euler_of(p.linear()).yaw});
+  for (const slam::Pose3& p : poses)
+    out.push_back({p.translation().x(), p.translation().y(), slam::euler_of(p.linear()).yaw});
   return out;
 }
 
@@ -93,15 +97,16 @@ nlohmann::json memory_json(const slam::Rbpf3d& filter) {
   const double n = static_cast<double>(maps.size());
   const double distinct = static_cast<double>(slam::EvidenceOctree::distinct_bytes(maps));
   nlohmann::json j;
-  j["mean_map_bytes"] = total / n;                 // what one map would cost alone
-  j["mean_unique_bytes_per_map"] = unique / n;     // what only that particle holds
-  j["all_maps_distinct_bytes"] = distinct;         // the whole population, shared once
+  j["mean_map_bytes"] = total / n;              // what one map would cost alone
+  j["mean_unique_bytes_per_map"] = unique / n;  // what only that particle holds
+  j["all_maps_distinct_bytes"] = distinct;      // the whole population, shared once
   j["distinct_bytes_per_particle"] = distinct / n;
-  j["sharing_factor"] = total / distinct;          // N full maps / what is stored
+  j["sharing_factor"] = total / distinct;  // N full maps / what is stored
   return j;
 }
 
-void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& filter, double wall_s) {
+void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& filter,
+                   double wall_s) {
   std::filesystem::create_directories(a.out);
   const std::size_t best = filter.best_particle();
   const slam::EvidenceOctree& map = filter.particles()[best].map;
@@ -118,13 +123,15 @@ void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& fil
   paths.push_back({top_down(odometry), {230, 140, 20}, "dead reckoning", 1});
   paths.push_back({top_down(estimate), {200, 30, 30}, "RBPF estimate (best particle)", 2});
   slam::write_map_picture(a.out + "/trajectory.png", slam::top_view(map), paths,
-                          fmt::format("slam3d {} - rbpf, {} particles (top view)", input_name(a.input), filter.particles().size()));
+                          fmt::format("slam3d {} - rbpf, {} particles (top view)",
+                                      input_name(a.input), filter.particles().size()));
   std::ofstream traj(a.out + "/trajectory.txt");
   traj << "# t x y z roll pitch yaw (best particle, one line per sweep)\n";
   for (std::size_t i = 0; i < estimate.size(); ++i) {
     const slam::Euler e = slam::euler_of(estimate[i].linear());
     const Eigen::Vector3d& p = estimate[i].translation();
-    traj << fmt::format("{:.3f} {:.4f} {:.4f} {:.4f} {:.5f} {:.5f} {:.5f}\n", in.log.sweeps[i].time, p.x(), p.y(), p.z(), e.roll, e.pitch, e.yaw);
+    traj << fmt::format("{:.3f} {:.4f} {:.4f} {:.4f} {:.5f} {:.5f} {:.5f}\n", in.log.sweeps[i].time,
+                        p.x(), p.y(), p.z(), e.roll, e.pitch, e.yaw);
   }
   const auto& st = filter.statistics();
   nlohmann::json j;
@@ -145,7 +152,8 @@ void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& fil
   if (!truth.empty()) {
     const Eigen::Vector3d& end = truth.back().translation();
     double length = 0;
-    for (std::size_t i = 1; i < truth.size(); ++i) length += (truth[i].translation() - truth[i - 1].translation()).norm();
+    for (std::size_t i = 1; i < truth.size(); ++i)
+      length += (truth[i].translation() - truth[i - 1].translation()).norm();
     j["path_length_m"] = length;
     j["final_position_error_m"] = (filter.mean_position() - end).norm();
     j["final_position_error_best_particle_m"] = (estimate.back().translation() - end).norm();
@@ -156,8 +164,8 @@ void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& fil
   std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
   if (j.contains("final_position_error_m")) {
     spdlog::info("final position error {:.2f} m (dead reckoning {:.2f} m) over {:.0f} m",
-                 j["final_position_error_m"].get<double>(), j["dead_reckoning_final_error_m"].get<double>(),
-                 j["path_length_m"].get<double>());
+                 j["final_position_error_m"].get<double>(),
+                 j["dead_reckoning_final_error_m"].get<double>(), j["path_length_m"].get<double>());
   }
 }
 
@@ -184,7 +192,8 @@ int run_slam3d(const Slam3dArgs& a) {
   const slam::Slam3dOptions options = options_from(a);
   const Input in = read_input(a, options);
   spdlog::info("{} sweeps, {} beams each; {} particles, {:.2f} m voxels", in.log.sweeps.size(),
-               in.log.sweeps.front().rays.size(), options.filter.particles, options.filter.map.resolution);
+               in.log.sweeps.front().rays.size(), options.filter.particles,
+               options.filter.map.resolution);
   slam::Rbpf3d filter(options.filter);
   ProgressBar bar("slam3d", in.log.sweeps.size());
   const auto start = std::chrono::steady_clock::now();
@@ -198,7 +207,8 @@ int run_slam3d(const Slam3dArgs& a) {
   Slam3dArgs with_yaml = a;
   with_yaml.config = slam::dump_slam3d_options(options);
   write_outputs(with_yaml, in, filter, wall);
-  spdlog::info("done in {:.1f} s, peak {:.0f} MB; wrote {}/trajectory.png and map.bt", wall, peak_memory_mb(), a.out);
+  spdlog::info("done in {:.1f} s, peak {:.0f} MB; wrote {}/trajectory.png and map.bt", wall,
+               peak_memory_mb(), a.out);
   return 0;
 }
 
@@ -206,7 +216,8 @@ int run_slam3d(const Slam3dArgs& a) {
 
 Run add_slam3d_command(CLI::App& app) {
   auto args = std::make_shared<Slam3dArgs>();
-  app.add_option("input", args->input, "garage | geb079 | a folder of 3DTK scanNNN.3d/.pose")->capture_default_str();
+  app.add_option("input", args->input, "garage | geb079 | a folder of 3DTK scanNNN.3d/.pose")
+      ->capture_default_str();
   app.add_option("--method", args->method, "rbpf (segslam: after the SegSLAM merge)")
       ->check(CLI::IsMember({"rbpf", "segslam"}))
       ->capture_default_str();
@@ -215,7 +226,8 @@ Run add_slam3d_command(CLI::App& app) {
   app.add_option("--geb079", args->geb079, "path of geb079.bt")->capture_default_str();
   app.add_option("--particles", args->particles, "number of particles (overrides the config)");
   app.add_option("--seed", args->seed, "filter seed (overrides the config)");
-  app.add_option("--data-seed", args->data_seed, "seed of the simulated world and robot")->capture_default_str();
+  app.add_option("--data-seed", args->data_seed, "seed of the simulated world and robot")
+      ->capture_default_str();
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--max-sweeps", args->max_sweeps, "stop after this many sweeps (0 = all)");
   app.add_flag("--dump-config", args->dump_config, "print the documented default options and exit");

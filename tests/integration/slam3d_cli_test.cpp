@@ -2,13 +2,13 @@
 // `lookahead slam3d` end to end: the outputs of a short run on each input kind, and the
 // clear error for the method that is not on this branch yet.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <unistd.h>
 
 namespace {
 
@@ -20,7 +20,8 @@ struct Result {
 };
 
 Result run(const std::string& args, const fs::path& log) {
-  const int status = std::system((std::string(LOOKAHEAD_BINARY) + " slam3d " + args + " > " + log.string() + " 2>&1").c_str());
+  const int status = std::system(
+      (std::string(LOOKAHEAD_BINARY) + " slam3d " + args + " > " + log.string() + " 2>&1").c_str());
   std::ifstream in(log);
   std::stringstream text;
   text << in.rdbuf();
@@ -31,7 +32,8 @@ class Slam3dCli : public ::testing::Test {
  protected:
   void SetUp() override {
     static int counter = 0;
-    dir = fs::temp_directory_path() / ("lookahead-slam3d-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    dir = fs::temp_directory_path() /
+          ("lookahead-slam3d-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
     fs::create_directories(dir);
   }
   void TearDown() override { fs::remove_all(dir); }
@@ -39,7 +41,8 @@ class Slam3dCli : public ::testing::Test {
 };
 
 TEST_F(Slam3dCli, GarageWritesMapPictureAndRunJson) {
-  const Result r = run("garage --particles 2 --max-sweeps 6 --out " + dir.string(), dir / "log.txt");
+  const Result r =
+      run("garage --particles 2 --max-sweeps 6 --out " + dir.string(), dir / "log.txt");
   ASSERT_EQ(r.code, 0) << r.output;
   for (const char* f : {"map.bt", "world.bt", "trajectory.png", "trajectory.txt", "run.json"}) {
     EXPECT_TRUE(fs::exists(dir / f)) << f;

@@ -49,10 +49,13 @@ Pose3 read_pose(const std::string& path) {
   int found = 0;
   while (found < 2 && reader.next(line)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    values[found] = three_numbers(line, path, reader.line_number(), found == 0 ? kPosition : kAngles);
+    values[found] =
+        three_numbers(line, path, reader.line_number(), found == 0 ? kPosition : kAngles);
     ++found;
   }
-  if (found < 2) throw ParseError(path, reader.line_number(), found == 0 ? "x" : "theta_x", "", "pose file ends early");
+  if (found < 2)
+    throw ParseError(path, reader.line_number(), found == 0 ? "x" : "theta_x", "",
+                     "pose file ends early");
   const Eigen::Vector3d a = values[1] * (M_PI / 180.0);
   const Eigen::Matrix3d r3 = (Eigen::AngleAxisd(a.y(), Eigen::Vector3d::UnitY()) *
                               Eigen::AngleAxisd(a.x(), Eigen::Vector3d::UnitX()) *
@@ -79,7 +82,8 @@ RangeSweep read_3dtk_scan(const std::string& scan_path, const std::string& pose_
   std::size_t index = 0;
   while (reader.next(line)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const Eigen::Vector3d point = p * three_numbers(line, scan_path, reader.line_number(), kPoint) * kCentimetre;
+    const Eigen::Vector3d point =
+        p * three_numbers(line, scan_path, reader.line_number(), kPoint) * kCentimetre;
     if (index++ % static_cast<std::size_t>(options.point_step) != 0) continue;
     const double range = point.norm();
     if (range <= 0.0) continue;  // a point at the sensor says nothing
@@ -101,7 +105,8 @@ RangeLog3 read_3dtk_folder(const std::string& folder, const ThreeDtkOptions& opt
     sweep.time = i;  // 3DTK scans carry no time stamps: one per second, in order
     log.sweeps.push_back(std::move(sweep));
   }
-  if (log.sweeps.empty()) throw ParseError(folder + "/scan000.3d", 0, "", "", "no 3DTK scans (scan000.3d) in the folder");
+  if (log.sweeps.empty())
+    throw ParseError(folder + "/scan000.3d", 0, "", "", "no 3DTK scans (scan000.3d) in the folder");
   return log;
 }
 

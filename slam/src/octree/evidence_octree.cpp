@@ -52,7 +52,9 @@ void walk(const NodeBase* n, int level, int x, int y, int z, const Visit& visit)
   }
 }
 
-std::size_t node_bytes(int level) { return level == kInnerLevels ? sizeof(Brick) : sizeof(InnerNode); }
+std::size_t node_bytes(int level) {
+  return level == kInnerLevels ? sizeof(Brick) : sizeof(InnerNode);
+}
 
 }  // namespace
 
@@ -137,7 +139,8 @@ void EvidenceOctree::for_each_voxel(const std::function<void(const OctreeKey&, f
 std::size_t EvidenceOctree::known_voxels() const {
   std::size_t n = 0;
   walk(root_, 0, 0, 0, 0, [&](const NodeBase* node, int level, int, int, int) {
-    if (level == kInnerLevels) n += static_cast<std::size_t>(__builtin_popcountll(static_cast<const Brick*>(node)->known));
+    if (level == kInnerLevels)
+      n += static_cast<std::size_t>(__builtin_popcountll(static_cast<const Brick*>(node)->known));
     return true;
   });
   return n;
@@ -188,10 +191,12 @@ const Brick* OctreeReader::brick_at(int x, int y, int z) {
   const int ax = x >> octree_detail::kAnchorShift, ay = y >> octree_detail::kAnchorShift,
             az = z >> octree_detail::kAnchorShift;
   if (ax != anchor_x_ || ay != anchor_y_ || az != anchor_z_) {
-    anchor_ = static_cast<const InnerNode*>(descend(map_->root_, 0, octree_detail::kAnchorLevel, x, y, z));
+    anchor_ = static_cast<const InnerNode*>(
+        descend(map_->root_, 0, octree_detail::kAnchorLevel, x, y, z));
     anchor_x_ = ax, anchor_y_ = ay, anchor_z_ = az;
   }
-  cached_ = static_cast<const Brick*>(descend(anchor_, octree_detail::kAnchorLevel, kInnerLevels, x, y, z));
+  cached_ = static_cast<const Brick*>(
+      descend(anchor_, octree_detail::kAnchorLevel, kInnerLevels, x, y, z));
   cached_x_ = bx, cached_y_ = by, cached_z_ = bz;
   return cached_;
 }
@@ -236,8 +241,8 @@ Brick& OctreeWriter::brick_at(const OctreeKey& k) {
     node = make_private<InnerNode>(node->child[octree_detail::child_index(k.x, k.y, k.z, level)],
                                    level + 1);
   }
-  cached_ = make_private<Brick>(node->child[octree_detail::child_index(k.x, k.y, k.z, kInnerLevels - 1)],
-                                kInnerLevels);
+  cached_ = make_private<Brick>(
+      node->child[octree_detail::child_index(k.x, k.y, k.z, kInnerLevels - 1)], kInnerLevels);
   cached_x_ = bx, cached_y_ = by, cached_z_ = bz;
   return *cached_;
 }

@@ -24,7 +24,8 @@ std::unique_ptr<octomap::OcTree> load_tree(const std::string& path) {
   if (has_extension(path, ".bt")) {
     std::ifstream in(path, std::ios::binary);
     auto tree = std::make_unique<octomap::OcTree>(0.1);
-    if (!tree->readBinary(in)) throw ParseError(path, 0, "", "", "not an OctoMap binary (.bt) OcTree");
+    if (!tree->readBinary(in))
+      throw ParseError(path, 0, "", "", "not an OctoMap binary (.bt) OcTree");
     return tree;
   }
   if (has_extension(path, ".ot")) {
@@ -60,9 +61,10 @@ EvidenceOctree read_octomap(const std::string& path) {
     for (int dz = 0; dz < side; ++dz)
       for (int dy = 0; dy < side; ++dy)
         for (int dx = 0; dx < side; ++dx)
-          writer.set_log_odds({static_cast<std::uint16_t>(base[0] + dx), static_cast<std::uint16_t>(base[1] + dy),
-                               static_cast<std::uint16_t>(base[2] + dz)},
-                              value);
+          writer.set_log_odds(
+              {static_cast<std::uint16_t>(base[0] + dx), static_cast<std::uint16_t>(base[1] + dy),
+               static_cast<std::uint16_t>(base[2] + dz)},
+              value);
   }
   return map;
 }

@@ -18,14 +18,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 /// The motion model: the dead-reckoned increment with noise on x, y, z and yaw; roll and
 /// pitch are the IMU's at the sweep's end.
-Pose3 sample_motion(const Pose3& previous, const Pose3& increment, const Euler& imu, double odometry_yaw_change,
-                    const Motion3Options& m, std::mt19937_64& rng) {
+Pose3 sample_motion(const Pose3& previous, const Pose3& increment, const Euler& imu,
+                    double odometry_yaw_change, const Motion3Options& m, std::mt19937_64& rng) {
   std::normal_distribution<double> unit(0.0, 1.0);
   const double travelled = increment.translation().norm();
   const double sigma_xy = std::max(m.min_xy, m.xy_per_metre * travelled);
-  const double sigma_yaw = std::max(m.min_yaw, m.yaw_per_metre * travelled + m.yaw_per_radian * std::abs(odometry_yaw_change));
+  const double sigma_yaw = std::max(
+      m.min_yaw, m.yaw_per_metre * travelled + m.yaw_per_radian * std::abs(odometry_yaw_change));
   Eigen::Vector3d position = previous * increment.translation();
-  position += Eigen::Vector3d(sigma_xy * unit(rng), sigma_xy * unit(rng), m.z_per_metre * travelled * unit(rng));
+  position += Eigen::Vector3d(sigma_xy * unit(rng), sigma_xy * unit(rng),
+                              m.z_per_metre * travelled * unit(rng));
   const double yaw = euler_of(previous.linear()).yaw + odometry_yaw_change + sigma_yaw * unit(rng);
   return make_pose3(position, {imu.roll, imu.pitch, yaw});
 }
@@ -36,7 +38,8 @@ Trajectory3Node::~Trajectory3Node() {
   std::shared_ptr<const Trajectory3Node> next = std::move(parent);
   while (next && next.use_count() == 1) {
     // Steal the parent's link before `next` dies, so its destructor finds nothing to free.
-    std::shared_ptr<const Trajectory3Node> up = std::move(const_cast<Trajectory3Node&>(*next).parent);
+    std::shared_ptr<const Trajectory3Node> up =
+        std::move(const_cast<Trajectory3Node&>(*next).parent);
     next = std::move(up);
   }
 }
@@ -47,7 +50,8 @@ void Rbpf3dOptions::validate() const {
   };
   require(particles >= 1 && particles <= 100000, "particles must be in 1..100000");
   require(threads >= 0, "threads must be >= 0");
-  require(resample_threshold > 0.0 && resample_threshold <= 1.0, "resample_threshold must be in (0, 1]");
+  require(resample_threshold > 0.0 && resample_threshold <= 1.0,
+          "resample_threshold must be in (0, 1]");
   require(weight_exponent > 0.0, "weight_exponent must be > 0");
   require(likelihood_ray_step >= 1 && insert_ray_step >= 1, "ray steps must be >= 1");
   require(insert.max_range > 0.0, "insert max_range must be > 0");
@@ -62,7 +66,9 @@ Rbpf3d::Rbpf3d(const Rbpf3dOptions& options) : options_(options), rng_(options.s
   options_.validate();
 }
 
-int Rbpf3d::thread_count() const { return options_.threads > 0 ? options_.threads : omp_get_num_procs(); }
+int Rbpf3d::thread_count() const {
+  return options_.threads > 0 ? options_.threads : omp_get_num_procs();
+}
 
 void Rbpf3d::add_sweep(const RangeSweep& sweep) {
   if (particles_.empty()) {
@@ -98,7 +104,8 @@ void Rbpf3d::predict_and_weigh(const RangeSweep& sweep) {
     p.pose = sample_motion(p.pose, increment, imu, yaw_change, options_.motion, rng);
     std::vector<Eigen::Vector3d> world(ends.size());
     for (std::size_t k = 0; k < ends.size(); ++k) world[k] = p.pose * ends[k];
-    p.log_weight += options_.weight_exponent * octree_log_likelihood(p.map, world, options_.likelihood);
+    p.log_weight +=
+        options_.weight_exponent * octree_log_likelihood(p.map, world, options_.likelihood);
   }
   stats_.predict_weight_seconds += seconds_since(start);
 }
@@ -123,7 +130,8 @@ void Rbpf3d::resample_if_needed() {
 void Rbpf3d::insert(const RangeSweep& sweep) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<Ray3> local;
-  for (std::size_t i = 0; i < sweep.rays.size(); i += static_cast<std::size_t>(options_.insert_ray_step)) {
+  for (std::size_t i = 0; i < sweep.rays.size();
+       i += static_cast<std::size_t>(options_.insert_ray_step)) {
     local.push_back(sweep.rays[i]);
   }
 #pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
@@ -152,13 +160,15 @@ Eigen::Vector3d Rbpf3d::mean_position() const {
   for (const Particle3& p : particles_) log_w.push_back(p.log_weight);
   const std::vector<double> w = normalized_weights(log_w);
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (std::size_t i = 0; i < particles_.size(); ++i) mean += w[i] * particles_[i].pose.translation();
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    mean += w[i] * particles_[i].pose.translation();
   return mean;
 }
 
 std::vector<Pose3> Rbpf3d::trajectory(std::size_t particle) const {
   std::vector<Pose3> poses;
-  for (const Trajectory3Node* n = particles_.at(particle).trajectory.get(); n; n = n->parent.get()) {
+  for (const Trajectory3Node* n = particles_.at(particle).trajectory.get(); n;
+       n = n->parent.get()) {
     poses.push_back(n->pose);
   }
   return {poses.rbegin(), poses.rend()};

@@ -11,7 +11,7 @@ namespace {
 constexpr double kLength = 84.0, kWidth = 36.0;  // footprint [m]
 constexpr double kDeck = 3.3;                    // height of the upper deck [m]
 constexpr double kRoof = 6.6;
-constexpr double kSlab = 0.2;                    // slab and wall thickness [m]
+constexpr double kSlab = 0.2;  // slab and wall thickness [m]
 // The ramps run along x in [kRampX0, kRampX1]: up at y in [14, 18], down at y in [18, 22].
 constexpr double kRampX0 = 30.0, kRampX1 = 54.0, kRampY0 = 14.0, kRampY1 = 22.0;
 
@@ -40,7 +40,8 @@ class Rasteriser {
 
  private:
   void solid(long x, long y, long z) {
-    writer_.set_log_odds({static_cast<std::uint16_t>(x), static_cast<std::uint16_t>(y), static_cast<std::uint16_t>(z)},
+    writer_.set_log_odds({static_cast<std::uint16_t>(x), static_cast<std::uint16_t>(y),
+                          static_cast<std::uint16_t>(z)},
                          static_cast<float>(map_.options().log_odds_max));
   }
   EvidenceOctree& map_;
@@ -49,16 +50,16 @@ class Rasteriser {
 
 void add_structure(Rasteriser& r) {
   const double t = kSlab;
-  r.box({{0, 0, -t}, {kLength, kWidth, 0}});                       // ground floor
-  r.box({{0, 0, kRoof}, {kLength, kWidth, kRoof + t}});            // roof
+  r.box({{0, 0, -t}, {kLength, kWidth, 0}});             // ground floor
+  r.box({{0, 0, kRoof}, {kLength, kWidth, kRoof + t}});  // roof
   // Upper deck, with the opening the ramps come through.
   r.box({{0, 0, kDeck - t}, {kLength, kRampY0, kDeck}});
   r.box({{0, kRampY1, kDeck - t}, {kLength, kWidth, kDeck}});
   r.box({{0, kRampY0, kDeck - t}, {kRampX0, kRampY1, kDeck}});
   r.box({{kRampX1, kRampY0, kDeck - t}, {kLength, kRampY1, kDeck}});
-  r.ramp(kRampX0, kRampX1, kRampY0, 18.0, 0.0, kDeck);              // up, eastwards
-  r.ramp(kRampX0, kRampX1, 18.0, kRampY1, 0.0, kDeck);              // down, westwards
-  r.box({{kRampX0, 17.9, 0}, {kRampX1, 18.1, kRoof}});              // wall between the ramps
+  r.ramp(kRampX0, kRampX1, kRampY0, 18.0, 0.0, kDeck);  // up, eastwards
+  r.ramp(kRampX0, kRampX1, 18.0, kRampY1, 0.0, kDeck);  // down, westwards
+  r.box({{kRampX0, 17.9, 0}, {kRampX1, 18.1, kRoof}});  // wall between the ramps
   // Outer walls.
   r.box({{0, 0, 0}, {kLength, t, kRoof}});
   r.box({{0, kWidth - t, 0}, {kLength, kWidth, kRoof}});
@@ -74,7 +75,7 @@ void add_cars(Rasteriser& r, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::bernoulli_distribution parked(0.6);
   const double rows[] = {0.4, 10.2, 22.2, 32.2};  // lower y of each row; cars are 3.6 m long
-  const double crossings[] = {8.0, 20.0, 63.0};    // x of the route's cross-aisle legs
+  const double crossings[] = {8.0, 20.0, 63.0};   // x of the route's cross-aisle legs
   for (double floor : {0.0, kDeck}) {
     for (double y0 : rows) {
       for (double x = 1.5; x + 1.8 < kLength - 0.5; x += 2.6) {

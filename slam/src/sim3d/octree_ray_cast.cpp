@@ -13,9 +13,12 @@ std::optional<double> cast_ray(const EvidenceOctree& world, const Eigen::Vector3
   VoxelWalk walk(g, origin, dir);
   double t = 0.0;  // where the beam entered the current voxel
   while (t <= max_range) {
-    if (!OctreeGrid::in_range(walk.key(0)) || !OctreeGrid::in_range(walk.key(1)) || !OctreeGrid::in_range(walk.key(2))) break;
-    const std::optional<float> l = reader.log_odds(static_cast<int>(walk.key(0)), static_cast<int>(walk.key(1)),
-                                                   static_cast<int>(walk.key(2)));
+    if (!OctreeGrid::in_range(walk.key(0)) || !OctreeGrid::in_range(walk.key(1)) ||
+        !OctreeGrid::in_range(walk.key(2)))
+      break;
+    const std::optional<float> l =
+        reader.log_odds(static_cast<int>(walk.key(0)), static_cast<int>(walk.key(1)),
+                        static_cast<int>(walk.key(2)));
     if (l && *l > occupied_above) return t;
     t = walk.step();
   }

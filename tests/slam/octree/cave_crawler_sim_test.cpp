@@ -35,13 +35,16 @@ TEST(GarageWorld, HasTwoDecksAndAClosedLoop) {
 }
 
 TEST(GarageWorld, SameSeedSameCars) {
-  EXPECT_EQ(make_garage_world(5, 0.2).map.known_voxels(), make_garage_world(5, 0.2).map.known_voxels());
-  EXPECT_NE(make_garage_world(5, 0.2).map.known_voxels(), make_garage_world(6, 0.2).map.known_voxels());
+  EXPECT_EQ(make_garage_world(5, 0.2).map.known_voxels(),
+            make_garage_world(5, 0.2).map.known_voxels());
+  EXPECT_NE(make_garage_world(5, 0.2).map.known_voxels(),
+            make_garage_world(6, 0.2).map.known_voxels());
 }
 
 TEST(CaveCrawlerSim, SameSeedSameLogOtherSeedOtherNoise) {
   const World3 w = short_garage(1);
-  const RangeLog3 a = simulate_cave_crawler(w, {}, 7), b = simulate_cave_crawler(w, {}, 7), c = simulate_cave_crawler(w, {}, 8);
+  const RangeLog3 a = simulate_cave_crawler(w, {}, 7), b = simulate_cave_crawler(w, {}, 7),
+                  c = simulate_cave_crawler(w, {}, 8);
   ASSERT_EQ(a.sweeps.size(), b.sweeps.size());
   ASSERT_GE(a.sweeps.size(), 10U);
   for (std::size_t i = 0; i < a.sweeps.size(); ++i) {
@@ -61,7 +64,8 @@ TEST(CaveCrawlerSim, TruthIsOnTheRouteAndDeadReckoningDriftsWithTheYawBias) {
   const RangeLog3 log = simulate_cave_crawler(w, o, 1);
   const Pose3& truth = *log.sweeps.back().truth;
   EXPECT_NEAR(truth.translation().y(), 7.0, 1e-9);
-  const double yaw_error = euler_of(log.sweeps.back().odometry.linear()).yaw - euler_of(truth.linear()).yaw;
+  const double yaw_error =
+      euler_of(log.sweeps.back().odometry.linear()).yaw - euler_of(truth.linear()).yaw;
   EXPECT_NEAR(yaw_error, 0.01 * log.sweeps.back().time, 1e-6);
 }
 

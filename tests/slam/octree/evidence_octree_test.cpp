@@ -78,7 +78,8 @@ TEST(EvidenceOctree, CopiesWrittenFromTwoThreadsStayIndependent) {
   std::vector<EvidenceOctree> copies(2, base);
   auto write = [&](int t) {
     std::mt19937 rng(static_cast<unsigned>(t));
-    for (int i = 0; i < 20000; ++i) copies[t].update(key(static_cast<int>(rng() % 64), static_cast<int>(rng() % 8), t), true);
+    for (int i = 0; i < 20000; ++i)
+      copies[t].update(key(static_cast<int>(rng() % 64), static_cast<int>(rng() % 8), t), true);
   };
   std::thread a(write, 0), b(write, 1);
   a.join();

@@ -37,15 +37,23 @@ TEST(RayInsertion, AgreesWithOctoMapInsertPointCloud) {
   for (const std::vector<Ray3>& scan : random_scans(7)) {
     insert_rays(ours, scan, options);
     octomap::Pointcloud cloud;
-    for (const Ray3& r : scan) cloud.push_back(static_cast<float>(r.end.x()), static_cast<float>(r.end.y()), static_cast<float>(r.end.z()));
+    for (const Ray3& r : scan)
+      cloud.push_back(static_cast<float>(r.end.x()), static_cast<float>(r.end.y()),
+                      static_cast<float>(r.end.z()));
     const Eigen::Vector3d& o = scan.front().origin;
-    ref.insertPointCloud(cloud, octomap::point3d(static_cast<float>(o.x()), static_cast<float>(o.y()), static_cast<float>(o.z())), options.max_range);
+    ref.insertPointCloud(cloud,
+                         octomap::point3d(static_cast<float>(o.x()), static_cast<float>(o.y()),
+                                          static_cast<float>(o.z())),
+                         options.max_range);
   }
   // Compare the classification of every voxel either map knows.
   std::size_t both = 0, agree = 0, only_ours = 0, only_ref = 0;
   ours.for_each_voxel([&](const OctreeKey& k, float l) {
     const octomap::OcTreeNode* n = ref.search(octomap::OcTreeKey(k.x, k.y, k.z));
-    if (!n) { ++only_ours; return; }
+    if (!n) {
+      ++only_ours;
+      return;
+    }
     ++both;
     if ((l > 0.0f) == ref.isNodeOccupied(n)) ++agree;
   });
@@ -83,12 +91,14 @@ TEST(RayInsertion, LongBeamsClearOnlyUpToMaxRange) {
 TEST(RayInsertion, OccupiedWinsOverFreeInOneBatch) {
   EvidenceOctree map;
   // The first beam ends where the second passes: the voxel is occupied, with one hit.
-  insert_rays(map, {{{0.1, 0.1, 0.1}, {2.1, 0.1, 0.1}, true}, {{0.1, 0.1, 0.1}, {4.1, 0.1, 0.1}, true}},
+  insert_rays(map,
+              {{{0.1, 0.1, 0.1}, {2.1, 0.1, 0.1}, true}, {{0.1, 0.1, 0.1}, {4.1, 0.1, 0.1}, true}},
               RayInsertOptions{});
   const auto l = map.log_odds(*map.grid().key_of({2.1, 0.1, 0.1}));
   ASSERT_TRUE(l);
   EXPECT_FLOAT_EQ(*l, static_cast<float>(map.options().log_odds_hit));
-  EXPECT_FLOAT_EQ(*map.log_odds(*map.grid().key_of({1.0, 0.1, 0.1})), static_cast<float>(map.options().log_odds_miss));
+  EXPECT_FLOAT_EQ(*map.log_odds(*map.grid().key_of({1.0, 0.1, 0.1})),
+                  static_cast<float>(map.options().log_odds_miss));
 }
 
 }  // namespace

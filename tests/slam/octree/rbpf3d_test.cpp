@@ -59,7 +59,8 @@ TEST(Rbpf3d, ResampledParticlesShareTheirMaps) {
   std::printf("6 maps: %zu bytes alone, %zu stored\n", full, EvidenceOctree::distinct_bytes(maps));
   // Each map was written by its last sweep after the last resampling; on this 21 m map a
   // sweep touches a good part of it, so the bound is loose (the full loop shares 11x).
-  EXPECT_LT(static_cast<double>(EvidenceOctree::distinct_bytes(maps)), 0.75 * static_cast<double>(full));
+  EXPECT_LT(static_cast<double>(EvidenceOctree::distinct_bytes(maps)),
+            0.75 * static_cast<double>(full));
 }
 
 // config/slam3d/default.yaml documents the defaults: it must say exactly what the code does.
@@ -68,7 +69,8 @@ TEST(Slam3dConfig, DefaultYamlMatchesTheCode) {
   ASSERT_TRUE(in) << "config/slam3d/default.yaml missing";
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_EQ(text.str(), dump_slam3d_options({})) << "regenerate with: lookahead slam3d --dump-config > config/slam3d/default.yaml";
+  EXPECT_EQ(text.str(), dump_slam3d_options({}))
+      << "regenerate with: lookahead slam3d --dump-config > config/slam3d/default.yaml";
   const Slam3dOptions back = parse_slam3d_options(text.str(), "default.yaml");
   EXPECT_EQ(dump_slam3d_options(back), text.str());
 }

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/io/threedtk_reader.hpp"
 
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <random>
 
@@ -82,9 +81,9 @@ TEST_F(ThreeDtkFiles, ExtraColumnsAndBlankLinesAreAccepted) {
   write("100 0 200 17\n\n-100 50 300 3\n", "\n0 0 0\n0 0 0\n");
   const RangeSweep s = read();
   ASSERT_EQ(s.rays.size(), 2U);
-  EXPECT_NEAR(s.rays[1].end.x(), 3.0, 1e-12);   // z forward
-  EXPECT_NEAR(s.rays[1].end.y(), 1.0, 1e-12);   // -x: 3DTK's x points right
-  EXPECT_NEAR(s.rays[1].end.z(), 0.5, 1e-12);   // y up
+  EXPECT_NEAR(s.rays[1].end.x(), 3.0, 1e-12);  // z forward
+  EXPECT_NEAR(s.rays[1].end.y(), 1.0, 1e-12);  // -x: 3DTK's x points right
+  EXPECT_NEAR(s.rays[1].end.z(), 0.5, 1e-12);  // y up
 }
 
 // Fuzz: random byte edits of a valid scan either parse or raise ParseError; nothing else.
@@ -98,9 +97,14 @@ TEST_F(ThreeDtkFiles, MutatedFilesParseOrRaiseParseError) {
     for (int edits = 1 + static_cast<int>(rng() % 4); edits > 0; --edits) {
       const std::size_t at = rng() % text.size();
       switch (rng() % 3) {
-        case 0: text[at] = alphabet[rng() % alphabet.size()]; break;
-        case 1: text.erase(at, 1); break;
-        default: text.insert(at, 1, alphabet[rng() % alphabet.size()]);
+        case 0:
+          text[at] = alphabet[rng() % alphabet.size()];
+          break;
+        case 1:
+          text.erase(at, 1);
+          break;
+        default:
+          text.insert(at, 1, alphabet[rng() % alphabet.size()]);
       }
     }
     write(text, "0 0 0\n0 0 0\n");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // 3D evidence grid (log-odds occupancy) stored in a copy-on-write octree: the DRCO map of
-// SegSLAM section 2.1 (Fairfield, Kantor, Wettergreen 2010; Fairfield et al. 2007).
+// SegSLAM sec. 2.1 (Fairfield, Kantor, Wettergreen 2010; Fairfield et al. 2007).
 //
 // Copying a map is O(1) (one reference count). Writing to a copy duplicates only the nodes
 // on the paths to the bricks it changes; the original never sees the change. Copies may be
@@ -21,12 +21,12 @@
 namespace lookahead::slam {
 
 struct OctreeOptions {
-  double resolution = 0.2;         ///< voxel side [m], 0.001..100
-  double log_odds_hit = 0.847298;  ///< added where a beam ends: log(0.7/0.3)
-  double log_odds_miss = -0.405465;///< added where a beam passes: log(0.4/0.6)
-  double log_odds_min = -1.99243;  ///< lower clamp: log(0.1192/0.8808)
-  double log_odds_max = 3.51154;   ///< upper clamp: log(0.971/0.029)
-  double occupied_above = 0.0;     ///< log-odds above which a voxel is occupied (p > 0.5)
+  double resolution = 0.2;           ///< voxel side [m], 0.001..100
+  double log_odds_hit = 0.847298;    ///< added where a beam ends: log(0.7/0.3)
+  double log_odds_miss = -0.405465;  ///< added where a beam passes: log(0.4/0.6)
+  double log_odds_min = -1.99243;    ///< lower clamp: log(0.1192/0.8808)
+  double log_odds_max = 3.51154;     ///< upper clamp: log(0.971/0.029)
+  double occupied_above = 0.0;       ///< log-odds above which a voxel is occupied (p > 0.5)
 
   /// Throws std::invalid_argument naming the first impossible value.
   void validate() const;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // How well a map explains a set of beam end points: the particle weight of the 3D RBPF
-// (SegSLAM section 2.2, the measurement likelihood p(z | x, m)).
+// (SegSLAM sec. 2.2, the measurement likelihood p(z | x, m)).
 //
 // A likelihood field truncated to one voxel: an end point's likelihood is a Gaussian in its
 // distance to the nearest occupied voxel centre among the 27 voxels around it, floored by a

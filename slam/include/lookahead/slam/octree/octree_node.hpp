@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The nodes of the evidence octree and their reference counts: the "deferred reference
-// count octree" (DRCO) of Fairfield et al. 2007, summarised in SegSLAM section 2.1.
+// count octree" (DRCO) of Fairfield et al. 2007, summarised in SegSLAM sec. 2.1.
 //
 // A node is shared by every map that reaches it; its count says by how many parents. A map
 // may change a node in place only when the count is 1 along the whole path from its root;
@@ -8,7 +8,7 @@
 // and a written copy owns exactly the nodes it changed.
 //
 // Deviation: the leaves are 4x4x4 bricks of voxels rather than single voxels. A brick
-// stores 64 log-odds in 264 bytes; a voxel-per-node tree needs a 72-byte node per voxel,
+// stores 64 log-odds in 272 bytes; a voxel-per-node tree needs a 72-byte node per voxel,
 // and the ray loop would chase two more pointers per voxel. The sharing is unchanged, only
 // coarser at the bottom. Homogeneous regions are not collapsed (no pruning): a brick
 // stores its 64 values even when they are equal.
@@ -20,10 +20,10 @@
 
 namespace lookahead::slam::octree_detail {
 
-constexpr int kBrickBits = 2;                      ///< 4 voxels per brick side
+constexpr int kBrickBits = 2;  ///< 4 voxels per brick side
 constexpr int kBrickSide = 1 << kBrickBits;
 constexpr int kBrickVoxels = kBrickSide * kBrickSide * kBrickSide;  // 64
-constexpr int kInnerLevels = 16 - kBrickBits;      ///< inner levels above the bricks
+constexpr int kInnerLevels = 16 - kBrickBits;  ///< inner levels above the bricks
 /// Readers and writers cache the node at this level (32^3 voxels: 6.4 m at 0.2 m), so
 /// neighbouring queries descend 3 levels instead of 14.
 constexpr int kAnchorLevel = kInnerLevels - 3;

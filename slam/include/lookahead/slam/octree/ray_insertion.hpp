@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Inserting range measurements into an evidence octree: every voxel a beam crosses gets
-// one miss, the voxel it ends in one hit (SegSLAM section 2.1, "ray insertion").
+// one miss, the voxel it ends in one hit (SegSLAM sec. 2.1, "ray insertion").
 //
 // The update is two-phase like octomap::OcTree::insertPointCloud: first the voxels of the
 // whole batch are collected and de-duplicated (a voxel that any beam ends in is occupied
@@ -45,6 +45,7 @@ RayVoxels collect_ray_voxels(const OctreeGrid& grid, const std::vector<Ray3>& ra
                              const RayInsertOptions& options);
 
 /// Both phases.
-void insert_rays(EvidenceOctree& map, const std::vector<Ray3>& rays, const RayInsertOptions& options);
+void insert_rays(EvidenceOctree& map, const std::vector<Ray3>& rays,
+                 const RayInsertOptions& options);
 
 }  // namespace lookahead::slam

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The 3D Rao-Blackwellized particle filter of SegSLAM section 2.2 (Fairfield et al. 2007):
+// The 3D Rao-Blackwellized particle filter of SegSLAM sec. 2.2 (Fairfield et al. 2007):
 // each particle is a pose and a copy-on-write evidence octree; the proposal is the dead-
 // reckoning motion model; weights come from the scan likelihood; resampling is selective
 // (only when N_eff drops). Resampled particles share their maps until they write.

@@ -13,12 +13,12 @@ namespace lookahead::slam {
 
 /// Noise of the 4-DoF motion model (x, y, z, yaw); roll and pitch come from the IMU.
 struct Motion3Options {
-  double xy_per_metre = 0.05;     ///< std of x and y per metre travelled [m/m], >= 0
-  double z_per_metre = 0.02;      ///< std of z per metre [m/m], >= 0
-  double yaw_per_metre = 0.01;    ///< std of yaw per metre [rad/m], >= 0
-  double yaw_per_radian = 0.05;   ///< std of yaw per radian turned [rad/rad], >= 0
-  double min_xy = 0.01;           ///< floor of the x, y std per update [m], >= 0
-  double min_yaw = 0.002;         ///< floor of the yaw std per update [rad], >= 0
+  double xy_per_metre = 0.05;    ///< std of x and y per metre travelled [m/m], >= 0
+  double z_per_metre = 0.02;     ///< std of z per metre [m/m], >= 0
+  double yaw_per_metre = 0.01;   ///< std of yaw per metre [rad/m], >= 0
+  double yaw_per_radian = 0.05;  ///< std of yaw per radian turned [rad/rad], >= 0
+  double min_xy = 0.01;          ///< floor of the x, y std per update [m], >= 0
+  double min_yaw = 0.002;        ///< floor of the yaw std per update [rad], >= 0
 };
 
 struct Rbpf3dOptions {
@@ -29,10 +29,10 @@ struct Rbpf3dOptions {
   /// Exponent k on the likelihood: w = w p(z|x,m)^k. As in the 2D RBPF, correlated beams
   /// make the raw likelihood overconfident; k < 1 keeps particles alive for a loop closure.
   double weight_exponent = 0.1;
-  int likelihood_ray_step = 3;      ///< score every n-th beam that hit, >= 1
-  int insert_ray_step = 1;          ///< insert every n-th beam, >= 1
-  OctreeOptions map;                ///< 0.2 m voxels by default
-  RayInsertOptions insert;          ///< beams inserted up to 15 m
+  int likelihood_ray_step = 3;  ///< score every n-th beam that hit, >= 1
+  int insert_ray_step = 1;      ///< insert every n-th beam, >= 1
+  OctreeOptions map;            ///< 0.2 m voxels by default
+  RayInsertOptions insert;      ///< beams inserted up to 15 m
   OctreeLikelihoodOptions likelihood;
   Motion3Options motion;
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A simulated Cave Crawler (SegSLAM section 5.1): a 2D laser on a jig that spins about the
+// A simulated Cave Crawler (SegSLAM sec. 5.1): a 2D laser on a jig that spins about the
 // robot's forward axis, IMU-and-wheel dead reckoning whose gyro has a yaw bias (the
 // largest error source the paper names), and continuous motion: the robot does not stop
 // to scan, so each sweep is de-skewed with dead reckoning.
@@ -16,12 +16,12 @@ namespace lookahead::slam {
 struct SpinningLaserOptions {
   /// Fan: a 180 deg 2D scan whose plane contains the forward axis; the jig turns that
   /// plane about the forward axis, so one half turn covers the forward hemisphere.
-  int lines_per_sweep = 30;    ///< 2D scans per half turn (6 deg of spin apart), >= 1
-  int beams_per_line = 61;     ///< beams across the fan (3 deg apart), >= 2
-  double sweep_period = 1.0;   ///< half-turn time [s], > 0
-  double max_range = 30.0;     ///< no return beyond [m], > 0
-  double range_sigma = 0.02;   ///< range noise std [m], >= 0
-  double mount_height = 0.6;   ///< laser above the robot's base [m]
+  int lines_per_sweep = 30;   ///< 2D scans per half turn (6 deg of spin apart), >= 1
+  int beams_per_line = 61;    ///< beams across the fan (3 deg apart), >= 2
+  double sweep_period = 1.0;  ///< half-turn time [s], > 0
+  double max_range = 30.0;    ///< no return beyond [m], > 0
+  double range_sigma = 0.02;  ///< range noise std [m], >= 0
+  double mount_height = 0.6;  ///< laser above the robot's base [m]
 };
 
 struct DeadReckoningOptions {

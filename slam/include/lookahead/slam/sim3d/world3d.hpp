@@ -13,8 +13,8 @@ namespace lookahead::slam {
 
 struct World3 {
   std::string name;
-  EvidenceOctree map;                     ///< occupied voxels are solid; all else is air
-  std::vector<Eigen::Vector3d> route;     ///< waypoints of the robot's base on the floor [m]
+  EvidenceOctree map;                  ///< occupied voxels are solid; all else is air
+  std::vector<Eigen::Vector3d> route;  ///< waypoints of the robot's base on the floor [m]
 };
 
 /// A two-level parking garage (84 x 36 m, decks at 0 and 3.3 m, a roof) with an up ramp
