@@ -11,6 +11,7 @@ namespace lookahead::app {
 using Run = std::function<int()>;
 
 Run add_slam_command(CLI::App& app);
+Run add_slam3d_command(CLI::App& app);
 Run add_eval_command(CLI::App& app);
 Run add_config_command(CLI::App& app);
 Run add_explore_command(CLI::App& app);

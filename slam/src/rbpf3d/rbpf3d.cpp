@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/rbpf3d/rbpf3d.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <stdexcept>
+
+#include "lookahead/slam/geometry/pose2.hpp"
+#include "lookahead/slam/rbpf/resampler.hpp"
+
+namespace lookahead::slam {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The motion model: the dead-reckoned increment with noise on x, y, z and yaw; roll and
+/// pitch are the IMU's at the sweep's end.
+Pose3 sample_motion(const Pose3& previous, const Pose3& increment, const Euler& imu,
+                    double odometry_yaw_change, const Motion3Options& m, std::mt19937_64& rng) {
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const double travelled = increment.translation().norm();
+  const double sigma_xy = std::max(m.min_xy, m.xy_per_metre * travelled);
+  const double sigma_yaw = std::max(
+      m.min_yaw, m.yaw_per_metre * travelled + m.yaw_per_radian * std::abs(odometry_yaw_change));
+  Eigen::Vector3d position = previous * increment.translation();
+  position += Eigen::Vector3d(sigma_xy * unit(rng), sigma_xy * unit(rng),
+                              m.z_per_metre * travelled * unit(rng));
+  const double yaw = euler_of(previous.linear()).yaw + odometry_yaw_change + sigma_yaw * unit(rng);
+  return make_pose3(position, {imu.roll, imu.pitch, yaw});
+}
+
+}  // namespace
+
+Trajectory3Node::~Trajectory3Node() {
+  std::shared_ptr<const Trajectory3Node> next = std::move(parent);
+  while (next && next.use_count() == 1) {
+    // Steal the parent's link before `next` dies, so its destructor finds nothing to free.
+    std::shared_ptr<const Trajectory3Node> up =
+        std::move(const_cast<Trajectory3Node&>(*next).parent);
+    next = std::move(up);
+  }
+}
+
+void Rbpf3dOptions::validate() const {
+  auto require = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("rbpf3d: ") + what);
+  };
+  require(particles >= 1 && particles <= 100000, "particles must be in 1..100000");
+  require(threads >= 0, "threads must be >= 0");
+  require(resample_threshold > 0.0 && resample_threshold <= 1.0,
+          "resample_threshold must be in (0, 1]");
+  require(weight_exponent > 0.0, "weight_exponent must be > 0");
+  require(likelihood_ray_step >= 1 && insert_ray_step >= 1, "ray steps must be >= 1");
+  require(insert.max_range > 0.0, "insert max_range must be > 0");
+  require(motion.xy_per_metre >= 0 && motion.z_per_metre >= 0 && motion.yaw_per_metre >= 0 &&
+              motion.yaw_per_radian >= 0 && motion.min_xy >= 0 && motion.min_yaw >= 0,
+          "motion noise must be >= 0");
+  map.validate();
+  likelihood.validate();
+}
+
+Rbpf3d::Rbpf3d(const Rbpf3dOptions& options) : options_(options), rng_(options.seed) {
+  options_.validate();
+}
+
+int Rbpf3d::thread_count() const {
+  return options_.threads > 0 ? options_.threads : omp_get_num_procs();
+}
+
+void Rbpf3d::add_sweep(const RangeSweep& sweep) {
+  if (particles_.empty()) {
+    // Every particle starts at the first odometry pose with the same (shared) map.
+    Particle3 first{sweep.odometry, EvidenceOctree(options_.map), 0.0, nullptr};
+    particles_.assign(static_cast<std::size_t>(options_.particles), first);
+  } else {
+    predict_and_weigh(sweep);
+    resample_if_needed();
+  }
+  insert(sweep);
+  last_odometry_ = sweep.odometry;
+  ++stats_.sweeps;
+}
+
+void Rbpf3d::predict_and_weigh(const RangeSweep& sweep) {
+  const auto start = std::chrono::steady_clock::now();
+  const Pose3 increment = last_odometry_.inverse() * sweep.odometry;
+  const Euler imu = euler_of(sweep.odometry.linear());
+  const double yaw_change = normalize_angle(imu.yaw - euler_of(last_odometry_.linear()).yaw);
+  std::vector<Eigen::Vector3d> ends;  // robot frame; every n-th beam that hit
+  for (std::size_t i = 0, hits = 0; i < sweep.rays.size(); ++i) {
+    if (sweep.rays[i].hit && hits++ % static_cast<std::size_t>(options_.likelihood_ray_step) == 0) {
+      ends.push_back(sweep.rays[i].end);
+    }
+  }
+  std::vector<std::uint64_t> seeds(particles_.size());
+  for (auto& s : seeds) s = rng_();  // drawn in order: same result on any thread count
+#pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
+  for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
+    Particle3& p = particles_[static_cast<std::size_t>(i)];
+    std::mt19937_64 rng(seeds[static_cast<std::size_t>(i)]);
+    p.pose = sample_motion(p.pose, increment, imu, yaw_change, options_.motion, rng);
+    std::vector<Eigen::Vector3d> world(ends.size());
+    for (std::size_t k = 0; k < ends.size(); ++k) world[k] = p.pose * ends[k];
+    p.log_weight +=
+        options_.weight_exponent * octree_log_likelihood(p.map, world, options_.likelihood);
+  }
+  stats_.predict_weight_seconds += seconds_since(start);
+}
+
+void Rbpf3d::resample_if_needed() {
+  std::vector<double> log_w;
+  for (const Particle3& p : particles_) log_w.push_back(p.log_weight);
+  const std::vector<double> w = normalized_weights(log_w);
+  const double neff = effective_sample_size(w);
+  stats_.neff.push_back(neff);
+  if (neff >= options_.resample_threshold * static_cast<double>(particles_.size())) return;
+  std::vector<Particle3> next;
+  next.reserve(particles_.size());
+  for (std::size_t i : low_variance_resample(w, rng_)) {
+    next.push_back(particles_[i]);  // O(1): the map is shared until written
+    next.back().log_weight = 0.0;
+  }
+  particles_ = std::move(next);
+  ++stats_.resamplings;
+}
+
+void Rbpf3d::insert(const RangeSweep& sweep) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<Ray3> local;
+  for (std::size_t i = 0; i < sweep.rays.size();
+       i += static_cast<std::size_t>(options_.insert_ray_step)) {
+    local.push_back(sweep.rays[i]);
+  }
+#pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
+  for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
+    Particle3& p = particles_[static_cast<std::size_t>(i)];
+    std::vector<Ray3> rays(local.size());
+    for (std::size_t k = 0; k < local.size(); ++k) {
+      rays[k] = {p.pose * local[k].origin, p.pose * local[k].end, local[k].hit};
+    }
+    insert_rays(p.map, rays, options_.insert);
+    p.trajectory = std::make_shared<const Trajectory3Node>(p.pose, p.trajectory);
+  }
+  stats_.insert_seconds += seconds_since(start);
+}
+
+std::size_t Rbpf3d::best_particle() const {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < particles_.size(); ++i) {
+    if (particles_[i].log_weight > particles_[best].log_weight) best = i;
+  }
+  return best;
+}
+
+Eigen::Vector3d Rbpf3d::mean_position() const {
+  std::vector<double> log_w;
+  for (const Particle3& p : particles_) log_w.push_back(p.log_weight);
+  const std::vector<double> w = normalized_weights(log_w);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    mean += w[i] * particles_[i].pose.translation();
+  return mean;
+}
+
+std::vector<Pose3> Rbpf3d::trajectory(std::size_t particle) const {
+  std::vector<Pose3> poses;
+  for (const Trajectory3Node* n = particles_.at(particle).trajectory.get(); n;
+       n = n->parent.get()) {
+    poses.push_back(n->pose);
+  }
+  return {poses.rbegin(), poses.rend()};
+}
+
+}  // namespace lookahead::slam

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// `lookahead slam3d` end to end: the outputs of a short run on each input kind, and the
+// clear error for the method that is not on this branch yet.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code;
+  std::string output;
+};
+
+Result run(const std::string& args, const fs::path& log) {
+  const int status = std::system(
+      (std::string(LOOKAHEAD_BINARY) + " slam3d " + args + " > " + log.string() + " 2>&1").c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WEXITSTATUS(status), text.str()};
+}
+
+class Slam3dCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    static int counter = 0;
+    dir = fs::temp_directory_path() /
+          ("lookahead-slam3d-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path dir;
+};
+
+TEST_F(Slam3dCli, GarageWritesMapPictureAndRunJson) {
+  const Result r =
+      run("garage --particles 2 --max-sweeps 6 --out " + dir.string(), dir / "log.txt");
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* f : {"map.bt", "world.bt", "trajectory.png", "trajectory.txt", "run.json"}) {
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  }
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "run.json"));
+  EXPECT_EQ(j["sweeps"].get<int>(), 6);
+  EXPECT_TRUE(j.contains("final_position_error_m"));
+  EXPECT_GT(j["memory"]["mean_map_bytes"].get<double>(), 0.0);
+}
+
+TEST_F(Slam3dCli, ThreeDtkFolderIsAnInput) {
+  const std::string dat = std::string(LOOKAHEAD_SHARED_DIR) + "/data/3d/3dtk_dat";
+  const Result r = run("'" + dat + "' --particles 2 --out " + dir.string(), dir / "log.txt");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "map.bt"));
+  EXPECT_TRUE(fs::exists(dir / "trajectory.png"));
+}
+
+TEST_F(Slam3dCli, SegslamIsAClearNotYetAvailableError) {
+  const Result r = run("garage --method segslam --out " + dir.string(), dir / "log.txt");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("not yet available"), std::string::npos) << r.output;
+}
+
+TEST_F(Slam3dCli, UnknownInputIsAnError) {
+  const Result r = run("/nonexistent/place --out " + dir.string(), dir / "log.txt");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("/nonexistent/place"), std::string::npos) << r.output;
+}
+
+}  // namespace
