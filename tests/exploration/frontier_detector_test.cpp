@@ -110,7 +110,7 @@ TEST(FrontierDetector, RetiredCellsStayRetired) {
   d.rebuild(g);
   double x, y;
   g.cell_center({39, 10}, x, y);
-  EXPECT_EQ(d.retire_near(g, x, y, 0.2), 9u);  // y = 6..14
+  EXPECT_EQ(d.retire_near(g, x, y, 0.22), 9u);  // y = 6..14
   EXPECT_EQ(d.retired_count(), 9u);
   EXPECT_EQ(d.cells().size(), 9u);
   EXPECT_FALSE(d.cells().count({39, 10}));
