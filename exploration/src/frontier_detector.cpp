@@ -46,10 +46,24 @@ void FrontierDetector::update(const slam::OccupancyGrid& grid, CellIndex min, Ce
   for (int y = min.y - 1; y <= max.y + 1; ++y) {
     for (int x = min.x - 1; x <= max.x + 1; ++x) {
       const CellIndex c{x, y};
-      if (is_frontier(grid, c)) cells_.insert(c);
+      if (is_frontier(grid, c) && !retired_.count(c)) cells_.insert(c);
       else cells_.erase(c);
     }
   }
+}
+
+std::size_t FrontierDetector::retire_near(const slam::OccupancyGrid& grid, double x, double y, double radius) {
+  std::vector<CellIndex> gone;
+  for (const CellIndex c : cells_) {
+    double cx, cy;
+    grid.cell_center(c, cx, cy);
+    if (std::hypot(cx - x, cy - y) <= radius) gone.push_back(c);
+  }
+  for (const CellIndex c : gone) {
+    cells_.erase(c);
+    retired_.insert(c);
+  }
+  return gone.size();
 }
 
 void FrontierDetector::rebuild(const slam::OccupancyGrid& grid) {

@@ -26,6 +26,10 @@ const char* to_string(MissionStatus s) {
 
 namespace {
 
+// Frontier cells this close to a reached goal [m] were in plain view of the robot there;
+// the goal lies at most goal_search_radius (1 m) from its cluster.
+constexpr double kRetireRadius = 1.0;
+
 MissionOptions checked(MissionOptions o) {
   o.validate();
   // The predictive strategy and a filter that uses hypotheses both need predictions made.
@@ -156,9 +160,14 @@ void Mission::refresh() {
   }
   last_resamplings_ = resamplings;
   last_best_ = best;
+  if (reached_goal_) {
+    stats_.retired_frontier_cells += frontiers_.retire_near(m, reached_goal_->x, reached_goal_->y, kRetireRadius);
+    reached_goal_.reset();
+  }
   costmap_ = planner::Costmap(m, options_.planner.costmap);
   if (follower_ && !follower_->path_still_valid(costmap_)) {
-    follower_.reset();  // new walls block the path: replan from here
+    follower_.reset();  // new walls block the path: replan from here (to the same goal)
+    path_blocked_ = true;
     ++stats_.replans;
   }
 }
@@ -177,45 +186,82 @@ bool Mission::goal_still_useful() const {
 
 void Mission::decide() {
   if (turned_ < options_.initial_turn || costmap_.empty()) return;
-  bool need = !follower_ || follower_->goal_reached();
+  if (!need_new_path()) return;
+  // A blocked path is no reason to change the target: only a target that stopped being
+  // worth it is. Re-choosing on every blocked path swaps between far frontiers.
+  if (path_blocked_ && goal_ && goal_still_useful() && replan_current_goal()) return;
+  select_new_target();
+}
+
+bool Mission::need_new_path() {
+  if (!follower_) return true;
   // A reached goal whose frontier is still there cannot be explored from there (a corner
-  // the sensor cannot see from its goal): do not pick it again for a while.
-  if (follower_ && follower_->goal_reached() && goal_) blacklist_.add(goal_->x, goal_->y, time_);
-  if (!need && time_ >= next_goal_check_) {
-    next_goal_check_ = time_ + options_.goal_check_period;
-    const slam::Pose2 p = estimate();
-    const double d = std::hypot(goal_->x - p.x, goal_->y - p.y);
-    if (d < best_goal_distance_ - 0.2) {
-      best_goal_distance_ = d;
-      last_progress_time_ = time_;
-    }
-    if (time_ - last_progress_time_ > options_.stuck_time) {
+  // the sensor cannot see from its goal, the inside of a wall): the frontier cells next to
+  // it are retired, and the spot is not picked again for a while.
+  if (follower_->goal_reached()) {
+    if (goal_) {
       blacklist_.add(goal_->x, goal_->y, time_);
-      ++stats_.stuck_goals;
-      need = true;
-    } else if (!goal_still_useful()) {
-      need = true;
+      reached_goal_ = goal_;  // its frontier gets one more map update to clear
     }
+    return true;
   }
-  if (!need) return;
-  follower_.reset();
-  goal_.reset();
-  blacklist_.expire(time_);
+  if (time_ < next_goal_check_) return false;
+  next_goal_check_ = time_ + options_.goal_check_period;
+  const slam::Pose2 p = estimate();
+  const double d = std::hypot(goal_->x - p.x, goal_->y - p.y);
+  if (d < best_goal_distance_ - 0.2) {
+    best_goal_distance_ = d;
+    last_progress_time_ = time_;
+  }
+  if (time_ - last_progress_time_ > options_.stuck_time) {
+    blacklist_.add(goal_->x, goal_->y, time_);
+    ++stats_.stuck_goals;
+    return true;
+  }
+  return !goal_still_useful();
+}
+
+SelectionInputs Mission::selection_inputs() {
   SelectionInputs in{&map(), &costmap_, &frontiers_, strategy_.get(), &blacklist_, estimate(), time_,
                      options_.laser.max_range, options_.max_goal_attempts, options_.planner};
-  in.planner.seed = static_cast<std::uint32_t>(options_.planner.seed + static_cast<std::uint32_t>(stats_.selections));
+  in.planner.seed = static_cast<std::uint32_t>(options_.planner.seed + static_cast<std::uint32_t>(stats_.plans));
   if (lookahead_) {
     in.predicted = &lookahead_->predicted();
     in.skip_confidence = options_.lookahead.skip_confidence;
   }
-  const Selection s = select_target(in);
-  spdlog::debug("t {:.1f}: selection {}: clusters {}, candidates {}, plans {} ({} failed)", time_,
-                static_cast<int>(s.outcome), s.clusters, s.candidates, s.plans, s.plan_failures);
-  ++stats_.selections;
+  return in;
+}
+
+void Mission::count(const Selection& s) {
   stats_.plans += s.plans;
   stats_.plan_failures += s.plan_failures;
   stats_.grid_fallbacks += s.grid_fallbacks;
   stats_.planning_time += s.planning_time;
+}
+
+bool Mission::replan_current_goal() {
+  path_blocked_ = false;
+  const Selection s = replan_to_goal(selection_inputs(), *goal_);
+  count(s);
+  spdlog::debug("t {:.1f}: replan to ({:.2f}, {:.2f}): {}", time_, goal_->x, goal_->y,
+                s.outcome == SelectionOutcome::kPlanned ? "planned" : "failed");
+  if (s.outcome != SelectionOutcome::kPlanned) return false;
+  // The stuck clock keeps running: a goal that keeps getting blocked is given up in time.
+  follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
+  return true;
+}
+
+void Mission::select_new_target() {
+  path_blocked_ = false;
+  follower_.reset();
+  goal_.reset();
+  blacklist_.expire(time_);
+  const Selection s = select_target(selection_inputs());
+  spdlog::debug("t {:.1f}: selection {}: clusters {}, candidates {}, plans {} ({} failed), goal ({:.2f}, {:.2f})",
+                time_, static_cast<int>(s.outcome), s.clusters, s.candidates, s.plans, s.plan_failures, s.goal_x,
+                s.goal_y);
+  ++stats_.selections;
+  count(s);
   if (s.outcome == SelectionOutcome::kNoFrontier) {
     status_ = MissionStatus::kDone;
     stats_.ended_on_predictions = s.rest_predicted;

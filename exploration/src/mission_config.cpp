@@ -79,6 +79,8 @@ void visit_planning_sections(MissionOptions& o, V&& v) {
   v("algorithm", o.planner.algorithm, "rrt_star | prm_star | informed_rrt_star");
   v("time_budget", o.planner.time_budget, "wall-clock budget of one search [s], (0, 60]");
   v("max_samples", o.planner.max_samples, "samples per search, 0 = no limit");
+  v("samples_per_m2", o.planner.samples_per_m2,
+    "samples per m^2 of the ellipse the Dijkstra price bounds (>= 300, <= max_samples); 0 = off");
   v("goal_tolerance", o.planner.goal_tolerance, "a path may end this close to the goal [m]");
   v("simplify", o.planner.simplify, "shortcut and smooth the found path");
   v("unknown_is_free", o.planner.costmap.unknown_is_free, "plan through never-observed cells");

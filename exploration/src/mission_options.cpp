@@ -13,8 +13,11 @@ MissionOptions MissionOptions::defaults() {
   // A simulated laser's no-return means "nothing within range": clear free space with it.
   o.slam.insert.clear_no_returns = true;
   // Planning ends by a sample count, not the clock: fast, and the same on any machine.
-  o.planner.time_budget = 1.0;
+  o.planner.time_budget = 10.0;  // a guard only: the sample count ends every search
   o.planner.max_samples = 3000;
+  // Searches bounded by the Dijkstra price sample their ellipse this densely: a short hop
+  // takes a few hundred samples, a long detour up to max_samples.
+  o.planner.samples_per_m2 = 50.0;
   o.blacklist.lifetime = 120.0;
   o.planner.costmap.unknown_is_free = true;  // frontier goals border unknown space
   o.follower.lookahead = 0.35;               // short: cut corners less in doorways

@@ -55,6 +55,13 @@ planner::Path grid_path(const planner::Costmap& cm, const TravelCost& cost, cons
   return cm.path_is_free(path) ? path : planner::Path{};
 }
 
+// The Dijkstra price runs between cell centres; the start and the goal may each sit up to
+// half a cell diagonal off theirs, so the grid path proves a path this long exists. 5 % on
+// top lets the sampler find a way round the other side of an obstacle as well.
+double grid_path_bound(const planner::Costmap& cm, double price) {
+  return 1.05 * price + std::sqrt(2.0) * cm.resolution();
+}
+
 std::vector<Candidate> price(const SelectionInputs& in, const std::vector<FrontierCluster>& clusters,
                              const TravelCost& cost, bool& any_reachable) {
   const planner::Costmap& cm = *in.costmap;
@@ -76,6 +83,45 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
     out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range), 0.0});
   }
   return out;
+}
+
+// Plans from `start` to the goal with OMPL inside the ellipse the Dijkstra price bounds,
+// retries once with more samples, and falls back to the grid path (counted) when the
+// sampler misses a passage the price went through.
+planner::PlanResult plan_to(const SelectionInputs& in, const TravelCost& cost, const planner::Point2& start,
+                            const planner::Point2& goal, Selection& s) {
+  const slam::Pose2 from{start.x, start.y, in.pose.theta};
+  planner::PlannerOptions options = in.planner;
+  options.cost_bound = grid_path_bound(*in.costmap, cost.at(in.costmap->cell_at(goal)));
+  planner::PlanResult r = planner::plan(*in.costmap, from, goal.x, goal.y, options);
+  ++s.plans;
+  s.planning_time += r.planning_time;
+  if (r.status == planner::PlanStatus::kNoPath && options.max_samples > 0) {
+    // The Dijkstra pricing found a way, so a failure is a narrow passage (a door) that a
+    // sample-limited search missed: one more try with four times the samples.
+    options.max_samples *= 4;
+    options.samples_per_m2 *= 4;
+    r = planner::plan(*in.costmap, from, goal.x, goal.y, options);
+    ++s.plans;
+    s.planning_time += r.planning_time;
+  }
+  if (!r.solved()) {
+    // Deviation from a pure sampling planner: a passage a few cells wide defeats the
+    // sampler, while the Dijkstra price already holds a checked way through it.
+    r.path = grid_path(*in.costmap, cost, start, goal);
+    if (!r.path.empty()) {
+      r.status = planner::PlanStatus::kSolved;
+      ++s.grid_fallbacks;
+    }
+  }
+  if (r.solved()) {
+    s.outcome = SelectionOutcome::kPlanned;
+    s.goal_x = goal.x;
+    s.goal_y = goal.y;
+    s.path = r.path;
+    if (start.x != in.pose.x || start.y != in.pose.y) s.path.insert(s.path.begin(), {in.pose.x, in.pose.y});
+  }
+  return r;
 }
 
 }  // namespace
@@ -108,42 +154,25 @@ Selection select_target(const SelectionInputs& in) {
       break;
     }
     const FrontierCluster& target = *candidates[*pick].cluster;
-    const slam::Pose2 from{start->x, start->y, in.pose.theta};
-    planner::PlanResult r = planner::plan(*in.costmap, from, target.goal_x, target.goal_y, in.planner);
-    ++s.plans;
-    s.planning_time += r.planning_time;
-    if (r.status == planner::PlanStatus::kNoPath && in.planner.max_samples > 0) {
-      // The Dijkstra pricing found a way, so a failure is a narrow passage (a door) that a
-      // sample-limited search missed: one more try with four times the samples.
-      planner::PlannerOptions wider = in.planner;
-      wider.max_samples *= 4;
-      r = planner::plan(*in.costmap, from, target.goal_x, target.goal_y, wider);
-      ++s.plans;
-      s.planning_time += r.planning_time;
-    }
-    if (!r.solved()) {
-      // Deviation from a pure sampling planner: a passage a few cells wide defeats the
-      // sampler, while the Dijkstra price already holds a checked way through it.
-      r.path = grid_path(*in.costmap, cost, *start, {target.goal_x, target.goal_y});
-      if (!r.path.empty()) {
-        r.status = planner::PlanStatus::kSolved;
-        ++s.grid_fallbacks;
-      }
-    }
-    if (r.solved()) {
-      s.outcome = SelectionOutcome::kPlanned;
-      s.goal_x = target.goal_x;
-      s.goal_y = target.goal_y;
-      s.path = r.path;
-      if (from.x != in.pose.x || from.y != in.pose.y) s.path.insert(s.path.begin(), {in.pose.x, in.pose.y});
-      return s;
-    }
+    const planner::PlanResult r = plan_to(in, cost, *start, {target.goal_x, target.goal_y}, s);
+    if (r.solved()) return s;
     ++s.plan_failures;
-    spdlog::debug("plan to ({:.2f}, {:.2f}) from ({:.2f}, {:.2f}) failed: {} {}", target.goal_x, target.goal_y, from.x,
-                  from.y, planner::to_string(r.status), r.message);
+    spdlog::debug("plan to ({:.2f}, {:.2f}) from ({:.2f}, {:.2f}) failed: {} {}", target.goal_x, target.goal_y,
+                  start->x, start->y, planner::to_string(r.status), r.message);
     in.blacklist->add(target.goal_x, target.goal_y, in.now);
     candidates.erase(candidates.begin() + static_cast<std::ptrdiff_t>(*pick));
   }
+  return s;
+}
+
+Selection replan_to_goal(const SelectionInputs& in, const planner::Point2& goal) {
+  Selection s;
+  s.outcome = SelectionOutcome::kPlanFailed;
+  const auto start = nearest_free(*in.costmap, in.pose.x, in.pose.y, 0.5);
+  if (!start || !in.costmap->is_free(goal)) return s;
+  const TravelCost cost = travel_cost(*in.costmap, *start);
+  if (!cost.reachable(in.costmap->cell_at(goal))) return s;
+  plan_to(in, cost, *start, goal, s);
   return s;
 }
 

@@ -94,11 +94,25 @@ Path simplify(const og::PathGeometric& found, const ob::SpaceInformationPtr& si,
   return to_path(path);
 }
 
+/// The sample budget of a search whose ellipse has `area` [m^2] (samples_per_m2).
+std::int64_t bounded_samples(const PlannerOptions& options, double area) {
+  if (options.samples_per_m2 <= 0.0) return options.max_samples;
+  auto n = static_cast<std::int64_t>(std::ceil(options.samples_per_m2 * area));
+  n = std::max(n, kMinBoundedSamples);
+  return options.max_samples > 0 ? std::min(n, options.max_samples) : n;
+}
+
 }  // namespace
 
 SearchOutcome search_with_ompl(const Costmap& costmap, Point2 start, Point2 goal,
                                const PlannerOptions& options) {
   auto context = std::make_shared<SamplingContext>(options.seed);
+  std::int64_t max_samples = options.max_samples;
+  if (options.cost_bound > 0.0) {
+    const InformedEllipse ellipse(start, goal, options.goal_tolerance);
+    context->bound_cost(ellipse, options.cost_bound);
+    max_samples = bounded_samples(options, ellipse.area(options.cost_bound));
+  }
   const ob::SpaceInformationPtr si = make_space(costmap, context);
   auto problem = std::make_shared<ob::ProblemDefinition>(si);
   ob::ScopedState<ob::RealVectorStateSpace> s(si->getStateSpace());
@@ -115,7 +129,6 @@ SearchOutcome search_with_ompl(const Costmap& costmap, Point2 start, Point2 goal
   const ob::PlannerPtr planner = make_planner(si, options, *context);
   planner->setProblemDefinition(problem);
   planner->setup();
-  const std::int64_t max_samples = options.max_samples;
   const ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(
       ob::timedPlannerTerminationCondition(options.time_budget),
       ob::PlannerTerminationCondition(

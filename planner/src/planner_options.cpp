@@ -35,6 +35,8 @@ void validate(const PlannerOptions& o) {
   check_range("PlannerOptions.goal_tolerance", o.goal_tolerance, 0.0, 5.0, "m");
   check_range("PlannerOptions.range", o.range, 0.0, 1000.0, "m");
   check_range("PlannerOptions.goal_bias", o.goal_bias, 0.0, 1.0, "");
+  check_range("PlannerOptions.cost_bound", o.cost_bound, 0.0, 1e6, "m");
+  check_range("PlannerOptions.samples_per_m2", o.samples_per_m2, 0.0, 1e6, "1/m^2");
   validate(o.costmap);
 }
 

@@ -20,8 +20,9 @@ std::uint32_t SamplingContext::derive(std::uint64_t stream) const {
 
 namespace {
 
-/// Uniform sampler over the bounds whose RNG (protected in ompl::base::StateSampler) is
-/// reseeded locally, and which counts its draws for PlannerOptions::max_samples.
+/// Uniform sampler over the bounds, or over the informed ellipse when the context knows a
+/// cost bound, whose RNG (protected in ompl::base::StateSampler) is reseeded locally, and
+/// which counts its draws for PlannerOptions::max_samples.
 class SeededSampler : public ob::RealVectorStateSampler {
  public:
   SeededSampler(const ob::StateSpace* space, std::shared_ptr<SamplingContext> context)
@@ -30,17 +31,28 @@ class SeededSampler : public ob::RealVectorStateSampler {
   }
   void sampleUniform(ob::State* state) override {
     context_->count_sample();
+    if (context_->bound() && sample_bounded(state)) return;
     RealVectorStateSampler::sampleUniform(state);
   }
 
  private:
+  // An ellipse reaching far past the map is rejected and redrawn a few times; an ellipse
+  // mostly off the map cannot happen for a bound from a path on the map.
+  bool sample_bounded(ob::State* state) {
+    for (int attempt = 0; attempt < 16; ++attempt) {
+      const Point2 p = context_->bound()->sample(context_->cost_bound(), rng_);
+      double* v = state->as<ob::RealVectorStateSpace::StateType>()->values;
+      v[0] = p.x;
+      v[1] = p.y;
+      if (space_->satisfiesBounds(state)) return true;
+    }
+    return false;
+  }
+
   std::shared_ptr<SamplingContext> context_;
 };
 
-/// Direct sampling of the informed set in R^2: Gammell et al. (IROS 2014), Sec. IV. For path
-/// length with start s and goal g, a state x can lie on a path of cost < c only if
-/// |x - s| + |x - g| <= c + goal_tolerance (the path may stop that short of g), an ellipse.
-/// Deviation: the tolerance widens the ellipse; the paper has a point goal.
+/// Informed RRT*'s sampler: the ellipse of the best solution's cost (InformedEllipse).
 class EllipseInformedSampler : public ob::InformedSampler {
  public:
   EllipseInformedSampler(const ob::ProblemDefinitionPtr& problem, unsigned int max_calls,
@@ -50,19 +62,19 @@ class EllipseInformedSampler : public ob::InformedSampler {
         context_(context),
         uniform_(space_->allocDefaultStateSampler()),
         rng_(context->next_seed()),
-        centre_{0.5 * (start.x + goal.x), 0.5 * (start.y + goal.y)},
-        half_focal_(0.5 * distance(start, goal)),
-        angle_(std::atan2(goal.y - start.y, goal.x - start.x)),
-        tolerance_(tolerance) {}
+        ellipse_(start, goal, tolerance) {}
 
   bool sampleUniform(ob::State* state, const ob::Cost& max_cost) override {
-    if (!opt_->isFinite(max_cost)) {  // no solution yet: the whole space is informative
+    if (!opt_->isFinite(max_cost)) {  // no solution yet: the whole space (or the known bound)
       uniform_->sampleUniform(state);
       return true;
     }
     context_->count_sample();  // one draw for max_samples, however many rejections it takes
     for (unsigned int i = 0; i < numIters_; ++i) {
-      sample_ellipse(max_cost.value(), state);
+      const Point2 p = ellipse_.sample(max_cost.value(), rng_);
+      double* v = state->as<ob::RealVectorStateSpace::StateType>()->values;
+      v[0] = p.x;
+      v[1] = p.y;
       if (space_->satisfiesBounds(state)) return true;
     }
     return false;
@@ -81,36 +93,14 @@ class EllipseInformedSampler : public ob::InformedSampler {
 
   double getInformedMeasure(const ob::Cost& current) const override {
     if (!opt_->isFinite(current)) return space_->getMeasure();
-    const double a = semi_major(current.value());
-    return std::min(space_->getMeasure(), M_PI * a * semi_minor(a));
+    return std::min(space_->getMeasure(), ellipse_.area(current.value()));
   }
 
  private:
-  double semi_major(double cost) const { return std::max(0.5 * (cost + tolerance_), half_focal_); }
-  double semi_minor(double a) const {
-    return std::sqrt(std::max(a * a - half_focal_ * half_focal_, 0.0));
-  }
-
-  void sample_ellipse(double cost, ob::State* state) {
-    const double a = semi_major(cost);
-    const double b = semi_minor(a);
-    // Uniform in the unit disc (sqrt for the radius), stretched to the ellipse, rotated.
-    const double r = std::sqrt(rng_.uniform01());
-    const double phi = rng_.uniformReal(-M_PI, M_PI);
-    const double ex = a * r * std::cos(phi);
-    const double ey = b * r * std::sin(phi);
-    double* v = state->as<ob::RealVectorStateSpace::StateType>()->values;
-    v[0] = centre_.x + ex * std::cos(angle_) - ey * std::sin(angle_);
-    v[1] = centre_.y + ex * std::sin(angle_) + ey * std::cos(angle_);
-  }
-
   std::shared_ptr<SamplingContext> context_;
   ob::StateSamplerPtr uniform_;  // counts its own draws
   ompl::RNG rng_;
-  Point2 centre_;
-  double half_focal_;
-  double angle_;
-  double tolerance_;
+  InformedEllipse ellipse_;
 };
 
 }  // namespace

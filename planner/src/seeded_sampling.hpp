@@ -10,7 +10,9 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
+#include "informed_ellipse.hpp"
 #include "lookahead/planner/path.hpp"
 
 namespace lookahead::planner::detail {
@@ -24,10 +26,21 @@ class SamplingContext {
   void count_sample() { samples_.fetch_add(1, std::memory_order_relaxed); }
   [[nodiscard]] std::int64_t samples() const { return samples_.load(std::memory_order_relaxed); }
 
+  /// A path of length `cost` is known to exist: from now on the default sampler draws only
+  /// from its informed ellipse (PlannerOptions::cost_bound).
+  void bound_cost(const InformedEllipse& ellipse, double cost) {
+    bound_ = ellipse;
+    cost_bound_ = cost;
+  }
+  [[nodiscard]] const std::optional<InformedEllipse>& bound() const { return bound_; }
+  [[nodiscard]] double cost_bound() const { return cost_bound_; }
+
  private:
   [[nodiscard]] std::uint32_t derive(std::uint64_t stream) const;
 
   std::uint32_t seed_;
+  std::optional<InformedEllipse> bound_;
+  double cost_bound_ = 0.0;
   std::atomic<std::uint64_t> stream_{0};
   std::atomic<std::int64_t> samples_{0};
 };

@@ -101,6 +101,28 @@ TEST(FrontierDetector, SmallClustersAreIgnored) {
   EXPECT_TRUE(d.clusters(g).empty());
 }
 
+// The frontier is x = 39, y = 1..18 (0.05 m cells). Standing at its middle and still
+// seeing it means the space behind cannot be seen: the cells near the robot retire for good,
+// the rest stay, and updates do not bring the retired ones back.
+TEST(FrontierDetector, RetiredCellsStayRetired) {
+  OccupancyGrid g = open_room();
+  FrontierDetector d;
+  d.rebuild(g);
+  double x, y;
+  g.cell_center({39, 10}, x, y);
+  EXPECT_EQ(d.retire_near(g, x, y, 0.22), 9u);  // y = 6..14
+  EXPECT_EQ(d.retired_count(), 9u);
+  EXPECT_EQ(d.cells().size(), 9u);
+  EXPECT_FALSE(d.cells().count({39, 10}));
+  d.update(g, {0, 0}, {39, 19});
+  EXPECT_EQ(d.cells().size(), 9u);
+  d.rebuild(g);
+  EXPECT_EQ(d.cells().size(), 9u);
+  EXPECT_TRUE(d.cells().count({39, 2}));
+  // The two stubs left (4 and 5 cells) are below min_cluster_cells: nothing to go to.
+  EXPECT_TRUE(d.clusters(g).empty());
+}
+
 TEST(GoalBlacklist, EntriesExpire) {
   GoalBlacklist b({0.5, 10.0});
   b.add(1.0, 1.0, 0.0);

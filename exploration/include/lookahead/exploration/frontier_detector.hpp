@@ -49,7 +49,13 @@ class FrontierDetector {
   /// map may differ anywhere).
   void rebuild(const slam::OccupancyGrid& grid);
 
+  /// Frontier cells within `radius` [m] of (x, y) stop being frontiers for good: the robot
+  /// stood there and they stayed, so the unknown space behind them cannot be seen (the
+  /// inside of a wall seen from both sides, gaps between grazing beams). Returns how many.
+  std::size_t retire_near(const slam::OccupancyGrid& grid, double x, double y, double radius);
+
   [[nodiscard]] const std::unordered_set<slam::CellIndex, CellHash>& cells() const { return cells_; }
+  [[nodiscard]] std::size_t retired_count() const { return retired_.size(); }
   /// Clusters (cells within cluster_gap of each other) of at least min_cluster_cells, each
   /// with a goal if one exists.
   [[nodiscard]] std::vector<FrontierCluster> clusters(const slam::OccupancyGrid& grid) const;
@@ -63,6 +69,7 @@ class FrontierDetector {
 
   FrontierOptions options_;
   std::unordered_set<slam::CellIndex, CellHash> cells_;
+  std::unordered_set<slam::CellIndex, CellHash> retired_;
 };
 
 }  // namespace lookahead::exploration

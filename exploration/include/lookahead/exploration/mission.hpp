@@ -15,6 +15,7 @@
 #include "lookahead/exploration/lookahead_mapping.hpp"
 #include "lookahead/exploration/mission_metrics.hpp"
 #include "lookahead/exploration/mission_options.hpp"
+#include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
 #include "lookahead/exploration/world.hpp"
 #include "lookahead/planner/costmap.hpp"
@@ -40,6 +41,7 @@ struct MissionStatistics {
   double planning_time = 0.0;  ///< wall clock [s]
   int collisions = 0;
   int safety_stops = 0;  ///< steps the reactive stop held the robot
+  std::size_t retired_frontier_cells = 0;  ///< frontier cells that outlived a visit
   std::size_t scans = 0, map_refreshes = 0;
   bool ended_on_predictions = false;  ///< done because every frontier left was predicted
 };
@@ -85,6 +87,11 @@ class Mission {
   std::vector<std::pair<double, double>> prediction_targets(double goal_x, double goal_y) const;
   void refresh();
   void decide();
+  bool need_new_path();
+  bool replan_current_goal();
+  void select_new_target();
+  SelectionInputs selection_inputs();
+  void count(const Selection& s);
   void act();
   void record();
   void check_end();
@@ -108,6 +115,8 @@ class Mission {
   planner::Costmap costmap_;
   std::unique_ptr<planner::PathFollower> follower_;
   std::optional<planner::Point2> goal_;
+  /// A goal reached with its frontier still there: retired after the next map update.
+  std::optional<planner::Point2> reached_goal_;
   std::unique_ptr<CarmenWriter> log_;
   slam::LaserScan last_scan_;
 
@@ -118,6 +127,7 @@ class Mission {
   double best_goal_distance_ = 0.0, last_progress_time_ = 0.0;
   int unreachable_streak_ = 0;
   bool map_changed_ = false;
+  bool path_blocked_ = false;  ///< the follower was dropped because new walls block its path
   std::size_t last_resamplings_ = 0, last_best_ = 0;
   slam::Pose2 last_refresh_pose_;
   std::vector<slam::Pose2> true_path_, estimated_path_;

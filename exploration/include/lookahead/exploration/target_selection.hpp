@@ -54,6 +54,10 @@ struct SelectionInputs {
 
 Selection select_target(const SelectionInputs& in);
 
+/// A new path to the current goal when the old one got blocked (new walls on it): keeps the
+/// target, so a blocked path does not turn into a new choice. kPlanned or kPlanFailed.
+Selection replan_to_goal(const SelectionInputs& in, const planner::Point2& goal);
+
 /// The free cell of `costmap` nearest to (x, y) within `radius` (a robot brushing a wall
 /// may sit in the inflation zone); nullopt when there is none.
 std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, double x, double y, double radius);

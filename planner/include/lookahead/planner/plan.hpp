@@ -7,12 +7,16 @@
 //  2. Pre-checks that need no search: finite input, start free, goal free, and a 4-connected
 //     flood fill of the free cells; a goal outside the start's component is reported as
 //     no_path at once instead of after the whole budget.
+//     A goal in free line of sight is answered with the straight segment, the shortest
+//     path there is (what every asymptotically optimal planner converges to).
 //  3. OMPL geometric planning in R^2 (position only): the robot is a disc, so after inflation
 //     its heading never decides a collision, and SE(2) would only add a dimension to sample.
 //     The follower turns the robot on the spot where the path bends (path_follower.hpp).
 //     Motions are checked with the costmap's exact cell walk; OMPL's discretisation step is
 //     also set to half a cell (its default, 1 % of the extent, would skip 5 cm cells).
 //     Only an EXACT solution counts: OMPL's PlannerStatus is also "true" when approximate.
+//     With PlannerOptions::cost_bound (a path length known from a grid search) every sample
+//     is drawn from the informed ellipse of that cost (Informed RRT*'s set, from the start).
 //  4. Simplification (OMPL PathSimplifier: vertex reduction, shortcuts, B-spline smoothing).
 //  5. Guard: the returned path is re-checked segment by segment at cell resolution. A path
 //     that fails is never returned as solved: the raw path is tried instead, and if that fails

@@ -22,6 +22,10 @@ enum class PlannerAlgorithm {
 
 [[nodiscard]] const char* to_string(PlannerAlgorithm algorithm);
 
+/// Fewest samples a search bounded by samples_per_m2 gets: enough for RRT* to bend round a
+/// corner or through a door inside even a thin ellipse.
+inline constexpr std::int64_t kMinBoundedSamples = 300;
+
 struct PlannerOptions {
   PlannerAlgorithm algorithm = PlannerAlgorithm::kRrtStar;
   /// Wall-clock budget of the search [s], (0, 60]. The planners are anytime: they keep
@@ -42,6 +46,15 @@ struct PlannerOptions {
   double goal_bias = 0.05;
   /// Shortcut and B-spline smoothing (OMPL PathSimplifier) of the found path.
   bool simplify = true;
+  /// Length of a path from start to goal known to exist [m] (e.g. one a grid search found),
+  /// [0, 1e6]; 0 = none known. Every sampler then draws from the informed ellipse of that
+  /// cost from the first sample on (Gammell et al., IROS 2014, with c_best given instead of
+  /// found): no shorter path leaves it, so the samples go where they can help.
+  double cost_bound = 0.0;
+  /// With a cost_bound: samples per m^2 of its ellipse, [0, 1e6]; the search then stops
+  /// after that many samples (at least kMinBoundedSamples, at most max_samples), so a short
+  /// hop costs few samples and a long detour many. 0 = max_samples alone.
+  double samples_per_m2 = 0.0;
   /// Seed of every random draw of one plan() call, [0, 2^32).
   std::uint32_t seed = 1;
   CostmapOptions costmap;
