@@ -2,8 +2,10 @@
 // P-SLAM on a laser log (`lookahead slam --predict`): a log has no exploration goals, so the
 // target is the one a robot driving this way would pick next -- the frontier cell nearest
 // the robot within the sensor range and ahead of it (within `half_angle` of its heading).
-// Predictions run on the worker thread; each is handed to the filter a fixed number of
-// updates after its request, so a run is reproducible whatever the machine's speed.
+// Predictions run on the worker thread and reach the filter at the first update, at least
+// `latency_updates` after the request, at which they are done: the filter never waits, so
+// with --predict a run depends on the machine's speed (off, it is plain RBPF bit for bit).
+// `reproducible` waits for them instead (tests, studies that need repeatable runs).
 #pragma once
 
 #include <optional>
@@ -19,6 +21,7 @@ struct SlamLookaheadOptions {
   int latency_updates = 2;   ///< a prediction reaches the filter this many updates later
   double range = 8.0;        ///< frontier cells up to this far from the robot [m]
   double half_angle = 1.0;   ///< ... and within this of its heading [rad]
+  bool reproducible = false; ///< wait for a late prediction instead of taking it later
 };
 
 /// The frontier cell (free, with an unknown 4-neighbour) nearest to `pose` within the range
