@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "lookahead/predictor/prediction_picture.hpp"
+
 namespace lookahead::exploration {
 
 slam::ProbabilityMap map_over_world(const slam::OccupancyGrid& map, const World& world) {
@@ -48,22 +50,8 @@ slam::BgrImage render_mission(const Mission& mission, const std::string& title) 
   if (const LookaheadMapping* la = mission.lookahead()) {
     // Predicted cells the robot has not explored yet, in colour beside the explored map.
     const PredictedMap& pm = la->predicted();
-    slam::PicturePoints walls{{}, {30, 70, 230}, "predicted wall", 1, true};
-    slam::PicturePoints free{{}, {170, 205, 250}, "predicted free", 1, true};
-    slam::CellIndex lo, hi;
-    if (pm.cells().known_bounds(lo, hi)) {
-      const double occupied = la->options().predictor.features.occupied_threshold;
-      for (int y = lo.y; y <= hi.y; ++y) {
-        for (int x = lo.x; x <= hi.x; ++x) {
-          if (!pm.predicted(mission.map(), {x, y})) continue;
-          double cx = 0, cy = 0;
-          pm.cells().cell_center({x, y}, cx, cy);
-          (pm.cells().probability({x, y}) >= occupied ? walls : free).points.push_back({cx, cy});
-        }
-      }
-    }
-    points.push_back(free);
-    points.push_back(walls);
+    points = predictor::predicted_cell_overlays(pm.cells(), la->options().predictor.features.occupied_threshold,
+                                                [&](slam::CellIndex c) { return pm.predicted(mission.map(), c); });
   }
   points.push_back(frontier);
   if (mission.goal()) points.push_back({{{mission.goal()->x, mission.goal()->y}}, {255, 140, 0}, "goal", 5});

@@ -20,17 +20,20 @@ slam::PicturePath circle(double cx, double cy, double r, slam::Rgb colour, const
 
 }  // namespace
 
-std::vector<slam::PicturePoints> hypothesis_overlays(const slam::HypothesisMap& h, double occupied_threshold) {
+std::vector<slam::PicturePoints> predicted_cell_overlays(const slam::OccupancyGrid& predicted,
+                                                         double occupied_threshold,
+                                                         const std::function<bool(slam::CellIndex)>& show) {
   slam::PicturePoints walls{{}, {30, 70, 230}, "predicted wall", 1, true};
   slam::PicturePoints free{{}, {170, 205, 250}, "predicted free", 1, true};
   slam::CellIndex lo, hi;
-  if (!h.grid.known_bounds(lo, hi)) return {walls, free};
-  for (int y = lo.y; y <= hi.y; ++y) {
-    for (int x = lo.x; x <= hi.x; ++x) {
-      if (!h.grid.is_known({x, y})) continue;
-      double cx = 0, cy = 0;
-      h.grid.cell_center({x, y}, cx, cy);
-      (h.grid.probability({x, y}) >= occupied_threshold ? walls : free).points.push_back({cx, cy});
+  if (predicted.known_bounds(lo, hi)) {
+    for (int y = lo.y; y <= hi.y; ++y) {
+      for (int x = lo.x; x <= hi.x; ++x) {
+        if (!predicted.is_known({x, y}) || (show && !show({x, y}))) continue;
+        double cx = 0, cy = 0;
+        predicted.cell_center({x, y}, cx, cy);
+        (predicted.probability({x, y}) >= occupied_threshold ? walls : free).points.push_back({cx, cy});
+      }
     }
   }
   return {free, walls};  // walls drawn last, over the free cells
@@ -41,7 +44,7 @@ void write_prediction_picture(const std::string& png_path, const slam::Occupancy
   const double r = o.surroundings_diameter / 2;
   std::vector<slam::PicturePath> paths{circle(p.target_x, p.target_y, r, {230, 120, 0}, "target region S_f")};
   std::vector<slam::PicturePoints> points;
-  if (p.hypothesis) points = hypothesis_overlays(*p.hypothesis, o.features.occupied_threshold);
+  if (p.hypothesis) points = predicted_cell_overlays(p.hypothesis->grid, o.features.occupied_threshold);
   slam::PicturePoints corners{{}, {150, 60, 170}, "corner features", 3, false};
   for (const Corner& c : p.features.corners) corners.points.push_back({c.x, c.y});
   points.push_back(corners);

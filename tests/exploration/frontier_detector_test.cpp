@@ -119,7 +119,7 @@ TEST(FrontierDetector, RetiredCellsStayRetired) {
   d.rebuild(g);
   EXPECT_EQ(d.cells().size(), 9u);
   EXPECT_TRUE(d.cells().count({39, 2}));
-  // The two stubs left (4 and 5 cells) are below min_cluster_cells: nothing to go to.
+  // The two short pieces left (4 and 5 cells) are below min_cluster_cells: nothing to go to.
   EXPECT_TRUE(d.clusters(g).empty());
 }
 

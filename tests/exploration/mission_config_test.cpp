@@ -123,3 +123,25 @@ TEST(MissionConfig, ShippedDefaultsMatchTheCode) {
 
 }  // namespace
 }  // namespace lookahead::exploration
+
+namespace lookahead::exploration {
+namespace {
+
+// P-SLAM options: garbage and impossible values name the file, line, key and value.
+TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
+  slam::ParseError e = parse_error("lookahead:\n  latency: 1.0\n  skip_share: lots\n");
+  EXPECT_EQ(e.line(), 3u);
+  EXPECT_EQ(e.field(), "lookahead.skip_share");
+  EXPECT_EQ(e.value(), "lots");
+  EXPECT_EQ(parse_error("lookahead:\n  similarity_threshold: 0.95\n").file(), "my.yaml");  // outside 0.4..0.7
+  EXPECT_EQ(parse_error("lookahead:\n  targets_per_selection: 0\n").file(), "my.yaml");
+  e = parse_error("slam:\n  prediction:\n    hit_ratio_threshold: high\n");
+  EXPECT_EQ(e.line(), 3u);
+  EXPECT_EQ(e.field(), "prediction.hit_ratio_threshold");
+  EXPECT_EQ(parse_error("slam:\n  prediction:\n    hit_ratio_threshold: 2\n").file(), "my.yaml");
+  const MissionOptions o = parse_mission_options("mission:\n  strategy: predictive\n", "x");
+  EXPECT_TRUE(o.lookahead.enabled);  // the predictive strategy turns predictions on
+}
+
+}  // namespace
+}  // namespace lookahead::exploration

@@ -8,11 +8,11 @@ namespace lookahead::slam::octree_detail {
 void release(const NodeBase* n, int level) {
   // Iterative, with an explicit stack: a map is 15 levels deep, but freeing a whole map
   // recursively from a worker thread costs stack for no reason.
-  std::vector<std::pair<const NodeBase*, int>> todo;
-  if (n) todo.emplace_back(n, level);
-  while (!todo.empty()) {
-    const auto [node, lvl] = todo.back();
-    todo.pop_back();
+  std::vector<std::pair<const NodeBase*, int>> pending;
+  if (n) pending.emplace_back(n, level);
+  while (!pending.empty()) {
+    const auto [node, lvl] = pending.back();
+    pending.pop_back();
     if (node->refs.fetch_sub(1, std::memory_order_acq_rel) != 1) continue;
     if (lvl == kInnerLevels) {
       delete static_cast<const Brick*>(node);
@@ -20,7 +20,7 @@ void release(const NodeBase* n, int level) {
     }
     const auto* inner = static_cast<const InnerNode*>(node);
     for (const NodeBase* c : inner->child) {
-      if (c) todo.emplace_back(c, lvl + 1);
+      if (c) pending.emplace_back(c, lvl + 1);
     }
     delete inner;
   }

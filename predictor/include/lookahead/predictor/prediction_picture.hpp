@@ -5,6 +5,7 @@
 // blue, predicted free space pale blue).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -13,8 +14,11 @@
 
 namespace lookahead::predictor {
 
-/// Predicted cells as picture overlays: occupied and free in two colours.
-std::vector<slam::PicturePoints> hypothesis_overlays(const slam::HypothesisMap& h, double occupied_threshold);
+/// Known cells of `predicted` as picture overlays, free then walls in two colours; `show`
+/// (optional) keeps only some cells (a mission shows those not explored yet).
+std::vector<slam::PicturePoints> predicted_cell_overlays(const slam::OccupancyGrid& predicted,
+                                                         double occupied_threshold,
+                                                         const std::function<bool(slam::CellIndex)>& show = nullptr);
 
 void write_prediction_picture(const std::string& png_path, const slam::OccupancyGrid& map,
                               const Prediction& prediction, const PredictorOptions& options);
