@@ -104,7 +104,7 @@ int run_explore(ExploreArgs a) {
 Run add_explore_command(CLI::App& app) {
   auto a = std::make_shared<ExploreArgs>();
   app.add_option("--config", a->config, "mission options YAML (see config/mission/default.yaml)");
-  app.add_option("--world", a->world.name, "office | maze | map .yaml | Stage .world | image")->capture_default_str();
+  app.add_option("--world", a->world.name, "office | maze | corridor | map .yaml | Stage .world | image")->capture_default_str();
   app.add_option("--resolution", a->world.image_resolution, "m/pixel of a plain image world")->capture_default_str();
   app.add_option("--pixel-rule", a->world.pixel_rule, "stage | only_white (plain images)")->capture_default_str();
   app.add_option("--laser-range", a->laser_range, "sensor range [m] (default 8, a SICK LMS-200 in Stage)");

@@ -99,4 +99,47 @@ GeneratedWorld make_pslam_maze(const MazeOptions& o) {
   return {std::move(w), {o.corridor / 2.0, o.corridor / 2.0, 0.0}};
 }
 
+void CorridorOptions::validate() const {
+  require(resolution > 0, "resolution", resolution, "must be > 0");
+  require(width > box_depth + 1.0, "width", width, "must exceed box_depth + 1 m (the robot passes a box)");
+  require(leg_ab > width, "leg_ab", leg_ab, "must exceed width");
+  require(leg_bc > width, "leg_bc", leg_bc, "must exceed width");
+  require(box_length > 0, "box_length", box_length, "must be > 0");
+  require(box_depth > 0, "box_depth", box_depth, "must be > 0");
+  require(box_spacing > box_length, "box_spacing", box_spacing, "must exceed box_length");
+  require(box_jitter >= 0 && box_jitter < 0.5 * (box_spacing - box_length), "box_jitter", box_jitter,
+          "must be in [0, (box_spacing - box_length) / 2)");
+  require(wall_thickness >= resolution, "wall_thickness", wall_thickness, "must be >= resolution");
+}
+
+// Leg A-B runs along +x over y in [0, width]; leg B-C runs along +y over x in
+// [leg_ab, leg_ab + width]. Boxes start one spacing from each leg's start and alternate
+// between the two walls of their leg; none is placed in the corner square B.
+GeneratedWorld make_pslam_corridor(const CorridorOptions& o) {
+  o.validate();
+  const double t = o.wall_thickness;
+  const double w_m = o.leg_ab + o.width + 2 * t;
+  const double h_m = o.leg_bc + o.width + 2 * t;
+  World w(cells(w_m, o.resolution), cells(h_m, o.resolution), o.resolution, {-t, -t}, World::kOccupied);
+  w.fill_rect({0.0, 0.0}, {o.leg_ab + o.width, o.width}, World::kFree);
+  w.fill_rect({o.leg_ab, 0.0}, {o.leg_ab + o.width, o.leg_bc + o.width}, World::kFree);
+  std::mt19937_64 rng(o.seed);
+  std::uniform_real_distribution<double> jitter(-o.box_jitter, o.box_jitter);
+  int side = 0;
+  for (double s = o.box_spacing; s + o.box_length < o.leg_ab - 0.5; s += o.box_spacing, side ^= 1) {
+    const double x = s + jitter(rng);
+    const double y0 = side == 0 ? 0.0 : o.width - o.box_depth;
+    w.fill_rect({x, y0}, {x + o.box_length, y0 + o.box_depth}, World::kOccupied);
+  }
+  for (double s = o.width + o.box_spacing; s + o.box_length < o.leg_bc + o.width - 0.5;
+       s += o.box_spacing, side ^= 1) {
+    const double y = s + jitter(rng);
+    const double x0 = side == 0 ? o.leg_ab : o.leg_ab + o.width - o.box_depth;
+    w.fill_rect({x0, y}, {x0 + o.box_depth, y + o.box_length}, World::kOccupied);
+  }
+  w.set_source("generated P-SLAM L corridor with boxes: legs " + std::to_string(o.leg_ab) + " m and " +
+               std::to_string(o.leg_bc) + " m, seed " + std::to_string(o.seed));
+  return {std::move(w), {0.8, 0.5 * o.width, 0.0}};
+}
+
 }  // namespace lookahead::exploration

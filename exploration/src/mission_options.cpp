@@ -21,6 +21,11 @@ MissionOptions MissionOptions::defaults() {
   o.blacklist.lifetime = 120.0;
   o.planner.costmap.unknown_is_free = true;  // frontier goals border unknown space
   o.follower.lookahead = 0.35;               // short: cut corners less in doorways
+  // The 1 deg beams of the 8 m laser end 0.14 m (2.8 cells) apart: at the far end of a
+  // corridor longer than the range the frontier is a row of specks 2-3 cells apart, and
+  // with a gap of 1 none of them makes a cluster (the mission ended "done" at 15 % of the
+  // generated corridor).
+  o.frontiers.cluster_gap = 3;
   // The paper's conservative Psi threshold (sec. III-C): on the maze 0.6 left a quarter of
   // the look-ahead map wrong, 0.7 about a tenth (README, P-SLAM).
   o.lookahead.predictor.similarity_threshold = 0.7;

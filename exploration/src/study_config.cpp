@@ -107,7 +107,7 @@ class StudyParser {
     StudyWorld sw;
     sw.line = static_cast<std::size_t>(w.Mark().line + 1);
     const std::string name = get<std::string>(required(w, "name", w), "worlds.name");
-    const bool generated = name == "office" || name == "maze";
+    const bool generated = name == "office" || name == "maze" || name == "corridor";
     sw.spec.name = generated ? name : (fs::path(base_dir_) / name).lexically_normal().string();
     sw.label = generated ? name
                          : fs::path(name).filename().string().substr(

@@ -76,6 +76,10 @@ GeneratedWorld load_world(const WorldSpec& spec, double robot_radius) {
     g = make_office(o);
   } else if (spec.name == "maze") {
     g = make_pslam_maze();
+  } else if (spec.name == "corridor") {
+    CorridorOptions o;
+    o.seed = spec.seed;
+    g = make_pslam_corridor(o);
   } else {
     g.world = load_file(spec);
     g.start = default_start(g.world, std::max(0.6, 2 * robot_radius));

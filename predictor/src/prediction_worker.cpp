@@ -1,10 +1,29 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/predictor/prediction_worker.hpp"
 
-namespace lookahead::predictor {
+#include <chrono>
 
-PredictionWorker::PredictionWorker(const PredictorOptions& options)
-    : options_((validate(options), options)), thread_([this] { loop(); }) {}
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
+namespace lookahead::predictor {
+namespace {
+
+// Linux applies setpriority() to a single thread when given its thread id (not POSIX:
+// elsewhere the worker keeps the process's priority).
+void lower_this_thread_priority() {
+#ifdef __linux__
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
+#endif
+}
+
+}  // namespace
+
+PredictionWorker::PredictionWorker(const PredictorOptions& options, Priority priority)
+    : options_((validate(options), options)), priority_(priority), thread_([this] { loop(); }) {}
 
 PredictionWorker::~PredictionWorker() {
   {
@@ -16,11 +35,28 @@ PredictionWorker::~PredictionWorker() {
 }
 
 void PredictionWorker::request(slam::OccupancyGrid map, double tx, double ty) {
+  request(std::move(map), std::vector<std::pair<double, double>>{{tx, ty}});
+}
+
+void PredictionWorker::request(slam::OccupancyGrid map, std::vector<std::pair<double, double>> candidates) {
+  if (candidates.empty()) return;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    queued_ = Request{std::move(map), tx, ty};
+    queued_ = Request{std::move(map), std::move(candidates)};
   }
   wake_.notify_one();
+}
+
+Prediction PredictionWorker::run(const Request& r) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ExploredMapModel model = model_explored_map(r.map, options_);
+  Prediction p;
+  for (const auto& [x, y] : r.targets) {
+    p = predict_structure(r.map, model, x, y, options_);
+    if (p.status != Prediction::Status::kNoControlPoint) break;
+  }
+  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return p;
 }
 
 std::optional<Prediction> PredictionWorker::poll() {
@@ -44,6 +80,7 @@ bool PredictionWorker::busy() const {
 }
 
 void PredictionWorker::loop() {
+  if (priority_ == Priority::kBackground) lower_this_thread_priority();
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     wake_.wait(lock, [this] { return stop_ || queued_.has_value(); });
@@ -52,7 +89,7 @@ void PredictionWorker::loop() {
     queued_.reset();
     running_ = true;
     lock.unlock();
-    Prediction p = predict_structure(r.map, r.x, r.y, options_);
+    Prediction p = run(r);
     lock.lock();
     result_ = std::move(p);
     running_ = false;

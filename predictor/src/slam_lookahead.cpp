@@ -1,38 +1,62 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/predictor/slam_lookahead.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace lookahead::predictor {
 
-std::optional<std::pair<double, double>> frontier_ahead(const slam::OccupancyGrid& map, const slam::Pose2& pose,
-                                                        double range, double half_angle, double free_threshold) {
+namespace {
+
+bool is_frontier_cell(const slam::OccupancyGrid& map, slam::CellIndex c, double free_threshold) {
+  if (!map.is_known(c) || map.probability(c) >= free_threshold) return false;
+  return !map.is_known({c.x + 1, c.y}) || !map.is_known({c.x - 1, c.y}) || !map.is_known({c.x, c.y + 1}) ||
+         !map.is_known({c.x, c.y - 1});
+}
+
+}  // namespace
+
+std::vector<std::pair<double, double>> frontiers_ahead(const slam::OccupancyGrid& map, const slam::Pose2& pose,
+                                                       double range, double half_angle, int max_count, double spacing,
+                                                       double free_threshold) {
   const slam::CellIndex lo = map.cell_at(pose.x - range, pose.y - range);
   const slam::CellIndex hi = map.cell_at(pose.x + range, pose.y + range);
-  std::optional<std::pair<double, double>> best;
-  double best_d = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<double, std::pair<double, double>>> found;  // (distance, cell centre)
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {
-      const slam::CellIndex c{x, y};
-      if (!map.is_known(c) || map.probability(c) >= free_threshold) continue;
-      if (map.is_known({x + 1, y}) && map.is_known({x - 1, y}) && map.is_known({x, y + 1}) && map.is_known({x, y - 1})) {
-        continue;
-      }
+      if (!is_frontier_cell(map, {x, y}, free_threshold)) continue;
       double cx = 0, cy = 0;
-      map.cell_center(c, cx, cy);
+      map.cell_center({x, y}, cx, cy);
       const double d = std::hypot(cx - pose.x, cy - pose.y);
-      if (d > range || d >= best_d) continue;
+      if (d > range) continue;
       if (std::abs(slam::normalize_angle(std::atan2(cy - pose.y, cx - pose.x) - pose.theta)) > half_angle) continue;
-      best = std::pair<double, double>{cx, cy};
-      best_d = d;
+      found.push_back({d, {cx, cy}});
     }
   }
-  return best;
+  std::sort(found.begin(), found.end());  // by distance, then position: no ties left to chance
+  std::vector<std::pair<double, double>> out;
+  for (const auto& [d, c] : found) {
+    if (static_cast<int>(out.size()) >= max_count) break;
+    const bool apart = std::all_of(out.begin(), out.end(), [&](const std::pair<double, double>& o) {
+      return std::hypot(o.first - c.first, o.second - c.second) >= spacing;
+    });
+    if (apart) out.push_back(c);
+  }
+  return out;
+}
+
+std::optional<std::pair<double, double>> frontier_ahead(const slam::OccupancyGrid& map, const slam::Pose2& pose,
+                                                        double range, double half_angle, double free_threshold) {
+  const auto all = frontiers_ahead(map, pose, range, half_angle, 1, 0.0, free_threshold);
+  if (all.empty()) return std::nullopt;
+  return all.front();
 }
 
 SlamLookahead::SlamLookahead(const PredictorOptions& predictor, const SlamLookaheadOptions& options)
-    : options_(options), worker_(predictor) {}
+    : options_(options),
+      worker_(predictor, options.reproducible ? PredictionWorker::Priority::kNormal
+                                              : PredictionWorker::Priority::kBackground) {}
 
 void SlamLookahead::after_update(slam::Rbpf& filter) {
   ++updates_;
@@ -57,9 +81,10 @@ void SlamLookahead::after_update(slam::Rbpf& filter) {
   }
   if (due_ >= 0 || updates_ % options_.period_updates != 0) return;
   const slam::Particle& best = filter.particles()[filter.best_particle()];
-  const auto target = frontier_ahead(best.map, best.pose, options_.range, options_.half_angle);
-  if (!target) return;
-  worker_.request(best.map, target->first, target->second);
+  auto targets = frontiers_ahead(best.map, best.pose, options_.range, options_.half_angle, options_.max_candidates,
+                                 options_.candidate_spacing);
+  if (targets.empty()) return;
+  worker_.request(best.map, std::move(targets));
   ++stats_.requests;
   due_ = updates_ + options_.latency_updates;
 }

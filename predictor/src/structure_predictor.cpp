@@ -85,19 +85,30 @@ std::shared_ptr<slam::HypothesisMap> make_hypothesis(const slam::OccupancyGrid& 
   return h;
 }
 
+ExploredMapModel model_explored_map(const slam::OccupancyGrid& map, const PredictorOptions& o) {
+  return {extract_features(map, o.features),
+          CoarseOccupancy(map, o.similarity_resolution, o.features.occupied_threshold, o.similarity_tolerance_cells)};
+}
+
 Prediction predict_structure(const slam::OccupancyGrid& map, double tx, double ty, const PredictorOptions& o) {
   validate(o);
+  const auto t0 = std::chrono::steady_clock::now();
+  Prediction p = predict_structure(map, model_explored_map(map, o), tx, ty, o);
+  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return p;
+}
+
+Prediction predict_structure(const slam::OccupancyGrid& map, const ExploredMapModel& model, double tx, double ty,
+                             const PredictorOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   Prediction p;
   p.target_x = tx;
   p.target_y = ty;
-  p.features = extract_features(map, o.features);
+  p.features = model.features;
   const std::optional<Corner> control = control_point(p.features.corners, tx, ty, o.control_point_range);
   if (control) {
-    const CoarseOccupancy coarse(map, o.similarity_resolution, o.features.occupied_threshold,
-                                 o.similarity_tolerance_cells);
     const RegionSamples region = disc_samples(tx, ty, o.surroundings_diameter, o.similarity_resolution);
-    const Registration reg = register_region(coarse, region, *control, p.features.corners, o);
+    const Registration reg = register_region(model.coarse, region, *control, p.features.corners, o);
     p.alignment = reg.best;
     p.candidates = reg.candidates;
     p.status = Prediction::Status::kNoMatch;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Generated office and P-SLAM maze: documented dimensions, and every free cell reachable.
+// Generated office, P-SLAM maze and corridor: documented dimensions, and every free cell reachable.
 #include <gtest/gtest.h>
 
 #include "lookahead/exploration/generated_worlds.hpp"
@@ -73,6 +73,32 @@ TEST(GeneratedWorlds, PslamMazeMatchesThePaper) {
   MazeOptions odd;
   odd.side = 24.0;
   EXPECT_THROW(odd.validate(), std::invalid_argument);
+}
+
+TEST(GeneratedWorlds, PslamCorridorIsAnLWithBoxesTheRobotCanPass) {
+  const CorridorOptions o;
+  const GeneratedWorld g = make_pslam_corridor(o);
+  EXPECT_NEAR(g.world.width_m(), 16.0 + 2.4 + 0.4, 1e-9);
+  EXPECT_NEAR(g.world.height_m(), 36.0 + 2.4 + 0.4, 1e-9);
+  // Free: the two legs minus their overlap, minus 3 + 8 boxes of 1.0 m x 0.7 m.
+  const double legs = 18.4 * 2.4 + 2.4 * 36.0;
+  EXPECT_NEAR(g.world.free_area_m2(), legs - 11 * 0.7, 0.01 * legs);
+  EXPECT_FALSE(g.world.is_occupied(17.2, 37.9));  // C, the far end
+  EXPECT_TRUE(g.world.is_occupied(8.0, 10.0));    // inside the L
+  // The first box sits on the lower wall of A-B, near 4 m.
+  bool box = false;
+  for (double x = 3.5; x < 5.0; x += 0.05) box = box || g.world.is_occupied(x, 0.1);
+  EXPECT_TRUE(box);
+  const ReachableArea disc = reachable_free_area(g.world, {g.start.x, g.start.y}, 0.25);
+  EXPECT_TRUE(disc.start_valid);
+  const auto c = g.world.cell_of({17.2, 37.9});
+  EXPECT_TRUE(disc.centres[static_cast<std::size_t>(c.y * g.world.width() + c.x)]);
+  CorridorOptions other = o;
+  other.seed = 2;
+  EXPECT_NE(make_pslam_corridor(other).world.cells(), g.world.cells());
+  CorridorOptions narrow = o;
+  narrow.width = 1.2;
+  EXPECT_THROW(narrow.validate(), std::invalid_argument);
 }
 
 TEST(WorldReachability, WideDiscCannotPassANarrowGap) {

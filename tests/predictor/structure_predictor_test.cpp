@@ -108,6 +108,42 @@ TEST(PredictionWorker, DeliversWhatTheSynchronousCallComputes) {
   EXPECT_FALSE(worker.poll().has_value());  // wait() handed it over
 }
 
+TEST(PredictionWorker, TakesTheFirstCandidateWithAControlPointOnOneMapModel) {
+  const slam::OccupancyGrid map = test::maze_grid(12.0);
+  // The first target has no corner near.
+  PredictionWorker worker({});
+  worker.request(map, {{60.0, 60.0}, {12.0, kPeriod + 1.1}, {12.0, 1.1}});
+  const std::optional<Prediction> p = worker.wait();
+  ASSERT_TRUE(p.has_value());
+  EXPECT_DOUBLE_EQ(p->target_x, 12.0);
+  EXPECT_DOUBLE_EQ(p->target_y, kPeriod + 1.1);
+  const Prediction q = predict_structure(map, 12.0, kPeriod + 1.1, {});
+  EXPECT_EQ(p->status, q.status);
+  EXPECT_DOUBLE_EQ(p->predicted_area, q.predicted_area);
+  worker.request(map, std::vector<std::pair<double, double>>{{60.0, 60.0}});
+  EXPECT_EQ(worker.wait()->status, Prediction::Status::kNoControlPoint);
+}
+
+TEST(PredictionWorker, BackgroundPriorityStillDelivers) {
+  // Nice 19 only yields the cores to busier threads; an idle machine runs it at once.
+  PredictionWorker worker({}, PredictionWorker::Priority::kBackground);
+  worker.request(test::maze_grid(6.0), 6.0, 1.1);
+  EXPECT_TRUE(worker.wait().has_value());
+}
+
+TEST(StructurePredictor, ModelledOnceEqualsModelledPerCall) {
+  const slam::OccupancyGrid map = test::maze_grid(12.0);
+  const PredictorOptions o;
+  const ExploredMapModel model = model_explored_map(map, o);
+  for (const double y : {1.1, kPeriod + 1.1}) {
+    const Prediction a = predict_structure(map, model, 12.0, y, o);
+    const Prediction b = predict_structure(map, 12.0, y, o);
+    EXPECT_EQ(a.status, b.status);
+    EXPECT_EQ(a.candidates, b.candidates);
+    EXPECT_DOUBLE_EQ(a.predicted_area, b.predicted_area);
+  }
+}
+
 }  // namespace
 }  // namespace lookahead::predictor
 
@@ -154,6 +190,24 @@ TEST(FrontierAhead, FindsTheNearestFrontierInTheHeadingCone) {
   ASSERT_TRUE(behind.has_value());
   EXPECT_NEAR(behind->first, -3.0, 0.1);
   EXPECT_FALSE(frontier_ahead(map, {0, 0, 0}, 2.0, 0.5).has_value());  // out of range
+}
+
+TEST(FrontierAhead, CandidatesComeNearestFirstAndSpacedApart) {
+  slam::OccupancyGrid map;
+  for (double y = -2; y < 2; y += 0.05)
+    for (double x = -3; x < 3; x += 0.05) map.add_log_odds(map.cell_at(x, y), -1000);
+  const auto all = frontiers_ahead(map, {0, 0, 0}, 8.0, 1.2, 6, 0.5);
+  ASSERT_EQ(all.size(), 6u);
+  double last = 0.0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const double d = std::hypot(all[i].first, all[i].second);
+    EXPECT_GE(d, last - 1e-9);
+    last = d;
+    EXPECT_LE(std::abs(std::atan2(all[i].second, all[i].first)), 1.2);
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_GE(std::hypot(all[i].first - all[j].first, all[i].second - all[j].second), 0.5);
+  }
+  EXPECT_EQ(all.front(), *frontier_ahead(map, {0, 0, 0}, 8.0, 1.2));
 }
 
 }  // namespace

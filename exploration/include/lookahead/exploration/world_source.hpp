@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A world named on the command line or in a study: "office" or "maze" (generated, seeded),
+// A world named on the command line or in a study: "office", "maze" or "corridor" (generated),
 // or a file: map_server .yaml, Stage .world, or an image (.png/.pgm) with its resolution.
 #pragma once
 
@@ -11,7 +11,7 @@
 namespace lookahead::exploration {
 
 struct WorldSpec {
-  std::string name = "office";          ///< office | maze | path to a file
+  std::string name = "office";          ///< office | maze | corridor | path to a file
   double image_resolution = 0.05;       ///< [m/pixel], for plain images only
   /// Pixel rule of a plain image: "stage" (darker than 128 is a wall) or "only_white"
   /// (only 255 is free: P2 Explore's KTH plans, whose outside is grey).

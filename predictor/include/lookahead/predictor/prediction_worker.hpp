@@ -9,6 +9,8 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "lookahead/predictor/structure_predictor.hpp"
 
@@ -16,7 +18,13 @@ namespace lookahead::predictor {
 
 class PredictionWorker {
  public:
-  explicit PredictionWorker(const PredictorOptions& options);
+  /// kBackground lowers the worker thread to the lowest CPU priority (nice 19, Linux): the
+  /// filter's threads then take the cores first and the prediction uses what they leave,
+  /// so it cannot slow the filter's update rate (issue 4's bar). Callers that wait() for
+  /// every prediction (reproducible missions) keep kNormal: waiting on a starved thread
+  /// would cost them more than it saves.
+  enum class Priority { kNormal, kBackground };
+  explicit PredictionWorker(const PredictorOptions& options, Priority priority = Priority::kNormal);
   ~PredictionWorker();
   PredictionWorker(const PredictionWorker&) = delete;
   PredictionWorker& operator=(const PredictionWorker&) = delete;
@@ -24,6 +32,10 @@ class PredictionWorker {
   /// Queues a prediction of the region around (tx, ty); a queued request that has not
   /// started yet is replaced (only the latest target matters).
   void request(slam::OccupancyGrid map, double tx, double ty);
+  /// The same for candidate targets in order of preference: the map is modelled once and
+  /// the first candidate with a control point in range is predicted (a log has no
+  /// exploration goal, so any frontier ahead that allows a prediction will do).
+  void request(slam::OccupancyGrid map, std::vector<std::pair<double, double>> candidates);
   /// The finished prediction, if one is ready (never blocks).
   std::optional<Prediction> poll();
   /// Blocks until the queued and running requests are done; their latest result, if any.
@@ -36,9 +48,11 @@ class PredictionWorker {
  private:
   struct Request {
     slam::OccupancyGrid map;
-    double x = 0, y = 0;
+    std::vector<std::pair<double, double>> targets;
   };
+  Prediction run(const Request& r) const;
   void loop();
+  Priority priority_;
 
   PredictorOptions options_;
   mutable std::mutex mutex_;

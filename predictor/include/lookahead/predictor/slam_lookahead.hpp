@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 // P-SLAM on a laser log (`lookahead slam --predict`): a log has no exploration goals, so the
-// target is the one a robot driving this way would pick next -- the frontier cell nearest
-// the robot within the sensor range and ahead of it (within `half_angle` of its heading).
+// target is one a robot driving this way could pick next -- a frontier cell within the
+// sensor range and ahead of it (within `half_angle` of its heading). The worker takes the
+// nearest such cell that has a control point in range: the nearest frontier cell alone
+// is mostly a gap between beams along a wall with no corner near it (fr101: 38 of 57
+// requests had no control point).
 // Predictions run on the worker thread and reach the filter at the first update, at least
 // `latency_updates` after the request, at which they are done: the filter never waits, so
 // with --predict a run depends on the machine's speed (off, it is plain RBPF bit for bit).
@@ -10,6 +13,7 @@
 
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "lookahead/predictor/prediction_worker.hpp"
 #include "lookahead/slam/rbpf/rbpf.hpp"
@@ -22,12 +26,19 @@ struct SlamLookaheadOptions {
   double range = 8.0;        ///< frontier cells up to this far from the robot [m]
   double half_angle = 1.0;   ///< ... and within this of its heading [rad]
   bool reproducible = false; ///< wait for a late prediction instead of taking it later
+  int max_candidates = 12;    ///< frontier cells offered per request, nearest first
+  double candidate_spacing = 0.5;  ///< candidates at least this far apart [m]
 };
 
 /// The frontier cell (free, with an unknown 4-neighbour) nearest to `pose` within the range
 /// and the heading cone; nullopt when there is none.
 std::optional<std::pair<double, double>> frontier_ahead(const slam::OccupancyGrid& map, const slam::Pose2& pose,
                                                         double range, double half_angle, double free_threshold = 0.35);
+/// Up to `max_count` such frontier cells, nearest first, each at least `spacing` [m] from
+/// the ones before it.
+std::vector<std::pair<double, double>> frontiers_ahead(const slam::OccupancyGrid& map, const slam::Pose2& pose,
+                                                       double range, double half_angle, int max_count, double spacing,
+                                                       double free_threshold = 0.35);
 
 struct SlamLookaheadStatistics {
   int requests = 0, hypotheses = 0, no_control_point = 0, no_match = 0;

@@ -13,6 +13,7 @@
 #include "lookahead/predictor/map_features.hpp"
 #include "lookahead/predictor/predictor_options.hpp"
 #include "lookahead/predictor/registration.hpp"
+#include "lookahead/predictor/similarity.hpp"
 #include "lookahead/slam/rbpf/hypothesis.hpp"
 
 namespace lookahead::predictor {
@@ -30,8 +31,20 @@ struct Prediction {
 };
 const char* to_string(Prediction::Status status);
 
+/// What every prediction on one explored map shares, computed once per map: the features
+/// (the Hough transform and corners over the whole map, most of a prediction's cost) and
+/// the coarse occupancy Psi is measured on.
+struct ExploredMapModel {
+  MapFeatures features;
+  CoarseOccupancy coarse;
+};
+ExploredMapModel model_explored_map(const slam::OccupancyGrid& map, const PredictorOptions& options);
+
 /// One prediction of the region around the target (tx, ty) on `map`.
 Prediction predict_structure(const slam::OccupancyGrid& map, double tx, double ty,
+                             const PredictorOptions& options);
+/// The same with the map's model already computed (several targets on one map).
+Prediction predict_structure(const slam::OccupancyGrid& map, const ExploredMapModel& model, double tx, double ty,
                              const PredictorOptions& options);
 
 /// The unexplored region beyond the target frontier: unknown cells within diameter d of the
