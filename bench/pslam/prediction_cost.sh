@@ -28,20 +28,21 @@ print(f"{len(runs)} predictions on the explored plan: median {statistics.median(
       f"max {max(ms):.0f} ms; {status}")
 PY
 log=../shared/data/fr101/fr101.carmen.log
-for rep in 1 2 3; do  # alternating, so both see the same load
+REPS=${REPS:-4}
+for rep in $(seq 1 "$REPS"); do  # alternating, so both see the same load
   for mode in plain predict; do
     flag=""; [ "$mode" = predict ] && flag="--predict"
     ./build/lookahead slam "$log" --particles 30 $flag --out "$out/fr101_${mode}_$rep" > /dev/null 2>&1
   done
 done
-python3 - "$out" <<'PY'
+python3 - "$out" "$REPS" <<'PY'
 import json, statistics, sys
-d = sys.argv[1]
+d, reps = sys.argv[1], int(sys.argv[2])
 def rate(mode):
-    runs = [json.load(open(f"{d}/fr101_{mode}_{r}/run.json")) for r in (1, 2, 3)]
-    return [r['updates'] / r['wall_time_s'] for r in runs], runs[-1].get('prediction')
+    runs = [json.load(open(f"{d}/fr101_{mode}_{r}/run.json")) for r in range(1, reps + 1)]
+    return [r['updates'] / r['wall_time_s'] for r in runs], [r.get('prediction') for r in runs]
 plain, _ = rate('plain'); pred, p = rate('predict')
-print(f"fr101, 30 particles, filter updates per second (median of 3): plain {statistics.median(plain):.0f}, "
-      f"with --predict {statistics.median(pred):.0f} (ratio {statistics.median(pred) / statistics.median(plain):.2f})")
-print(f"predictions on fr101: {p}")
+print(f"fr101, 30 particles, filter updates per second (median of {reps}): plain {statistics.median(plain):.1f}, "
+      f"with --predict {statistics.median(pred):.1f} (ratio {statistics.median(pred) / statistics.median(plain):.2f})")
+print("predictions per run (requests, hypotheses):", [(x['requests'], x['hypotheses']) for x in p])
 PY

@@ -47,9 +47,22 @@ void PredictionWorker::request(slam::OccupancyGrid map, std::vector<std::pair<do
   wake_.notify_one();
 }
 
-Prediction PredictionWorker::run(const Request& r) const {
+// Copy-on-write: a map whose tiles all are the modelled map's tiles has the same cells.
+const ExploredMapModel& PredictionWorker::model_of(const slam::OccupancyGrid& map) {
+  const std::size_t tiles = map.tile_count();
+  const bool same = modelled_map_ && model_ && modelled_map_->tile_count() == tiles &&
+                    modelled_map_->tiles_shared_with(map) == tiles;
+  if (!same) {
+    model_ = model_explored_map(map, options_);
+    modelled_map_ = map;
+    ++maps_modelled_;
+  }
+  return *model_;
+}
+
+Prediction PredictionWorker::run(const Request& r) {
   const auto t0 = std::chrono::steady_clock::now();
-  const ExploredMapModel model = model_explored_map(r.map, options_);
+  const ExploredMapModel& model = model_of(r.map);
   Prediction p;
   for (const auto& [x, y] : r.targets) {
     p = predict_structure(r.map, model, x, y, options_);

@@ -122,6 +122,12 @@ TEST(PredictionWorker, TakesTheFirstCandidateWithAControlPointOnOneMapModel) {
   EXPECT_DOUBLE_EQ(p->predicted_area, q.predicted_area);
   worker.request(map, std::vector<std::pair<double, double>>{{60.0, 60.0}});
   EXPECT_EQ(worker.wait()->status, Prediction::Status::kNoControlPoint);
+  EXPECT_EQ(worker.maps_modelled(), 1);  // the same map: modelled once
+  slam::OccupancyGrid changed = map;
+  changed.add_log_odds(changed.cell_at(1.0, 1.0), 100);  // copy-on-write: one tile differs
+  worker.request(changed, 12.0, kPeriod + 1.1);
+  EXPECT_EQ(worker.wait()->status, Prediction::Status::kPredicted);
+  EXPECT_EQ(worker.maps_modelled(), 2);
 }
 
 TEST(PredictionWorker, BackgroundPriorityStillDelivers) {

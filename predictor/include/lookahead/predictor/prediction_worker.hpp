@@ -5,6 +5,7 @@
 // writing its own copy.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <mutex>
 #include <optional>
@@ -44,13 +45,16 @@ class PredictionWorker {
   std::optional<Prediction> wait();
   /// A request is queued or running.
   [[nodiscard]] bool busy() const;
+  /// Maps modelled so far (a request on the map of the previous one reuses its model).
+  [[nodiscard]] int maps_modelled() const { return maps_modelled_.load(); }
 
  private:
   struct Request {
     slam::OccupancyGrid map;
     std::vector<std::pair<double, double>> targets;
   };
-  Prediction run(const Request& r) const;
+  Prediction run(const Request& r);
+  const ExploredMapModel& model_of(const slam::OccupancyGrid& map);
   void loop();
   Priority priority_;
 
@@ -60,6 +64,11 @@ class PredictionWorker {
   std::optional<Request> queued_;
   std::optional<Prediction> result_;
   bool running_ = false, stop_ = false;
+  // The last map modelled and its model, touched by the worker thread only: a mission
+  // sends the targets of one selection one by one on the same map.
+  std::optional<slam::OccupancyGrid> modelled_map_;
+  std::optional<ExploredMapModel> model_;
+  std::atomic<int> maps_modelled_{0};
   std::thread thread_;
 };
 
