@@ -34,6 +34,7 @@ class Search {
   JcbbResult run() {
     std::vector<std::size_t> chosen;
     recurse(0, chosen, 0.0);
+    best_.nodes = nodes_;
     return best_;
   }
 
