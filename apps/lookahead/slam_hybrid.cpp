@@ -11,6 +11,7 @@
 #include "hybrid_pictures.hpp"
 #include "lookahead/slam/eval/absolute_error.hpp"
 #include "lookahead/slam/eval/relative_error.hpp"
+#include "lookahead/slam/eval/scan_matched_reference.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
 #include "lookahead/slam/hybrid/hybrid_config.hpp"
 #include "lookahead/slam/hybrid/log_mapper.hpp"
@@ -29,30 +30,58 @@ LogMappingOptions options_from(const SlamHybridArgs& a) {
   if (!a.config.empty()) {
     HybridConfig base;
     base.filter = o.filter;
-    o.filter = load_hybrid_config(a.config, base).filter;
+    const HybridConfig c = load_hybrid_config(a.config, base);
+    o.filter = c.filter;
+    o.landmarks = c.scan_landmarks;
+    // Missed detections count inside the range the landmarks are extracted from.
+    o.filter.sensor.max_range = o.landmarks.max_range;
   }
   if (a.particles >= 1) o.filter.fastslam.particles = a.particles;
   if (a.seed >= 0) o.filter.fastslam.seed = static_cast<std::uint64_t>(a.seed);
   return o;
 }
 
-// GMapping's corrected log beside the raw one (fr101.carmen.log -> fr101.carmen.gfs.log).
+// A corrected log beside the raw one: GMapping's (fr101.carmen.log -> fr101.carmen.gfs.log),
+// else the Radish one named by the log's stem before the first '-'
+// (csail-oldcarmen.log -> csail.corrected.log).
 std::string reference_log_for(const std::string& log_path) {
   std::string p = log_path;
   if (p.size() > 3 && p.substr(p.size() - 3) == ".gz") p.resize(p.size() - 3);
   if (p.size() < 4 || p.substr(p.size() - 4) != ".log") return "";
-  p = p.substr(0, p.size() - 4) + ".gfs.log";
-  return std::filesystem::exists(p) ? p : "";
+  const std::string gfs = p.substr(0, p.size() - 4) + ".gfs.log";
+  if (std::filesystem::exists(gfs)) return gfs;
+  const std::filesystem::path path(p);
+  const std::string stem = path.filename().string();
+  const std::string corrected = (path.parent_path() / (stem.substr(0, stem.find('-')) + ".corrected.log")).string();
+  return stem.find('-') != std::string::npos && std::filesystem::exists(corrected) ? corrected : "";
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The reference on the raw log's logger clock: a .gfs.log shares the clock; a Radish
+// .corrected.log does not (6-digit stamps), so its scans are paired by their ranges.
+std::vector<slam::StampedPose> reference_poses(const std::string& reference_path, const slam::LaserLog& log) {
+  const slam::LaserLog ref_log = slam::read_carmen_log(reference_path);
+  if (ends_with(reference_path, ".corrected.log")) {
+    const slam::ScanMatchedReference matched = slam::reference_by_matching_scans(ref_log, log);
+    spdlog::info("{}: {} of {} scans paired with the log by their ranges", reference_path, matched.poses.size(),
+                 ref_log.scans.size());
+    return matched.poses;
+  }
+  std::vector<slam::StampedPose> reference;
+  for (const auto& s : ref_log.scans) reference.push_back({s.timestamp, s.odometry});
+  return reference;
 }
 
 // Scores the trajectory on the logger clock against the reference's consecutive poses
-// (`lookahead eval --reference-log` does the same from the files).
-nlohmann::json score(const std::vector<slam::StampedPose>& logger_time, const std::string& reference_path) {
+// (`lookahead eval --reference-log` does the same from the files for a .gfs.log).
+nlohmann::json score(const std::vector<slam::StampedPose>& logger_time, const slam::LaserLog& log,
+                     const std::string& reference_path) {
   nlohmann::json j;
   if (reference_path.empty()) return j;
-  const slam::LaserLog ref_log = slam::read_carmen_log(reference_path);
-  std::vector<slam::StampedPose> reference;
-  for (const auto& s : ref_log.scans) reference.push_back({s.timestamp, s.odometry});
+  const std::vector<slam::StampedPose> reference = reference_poses(reference_path, log);
   constexpr double kTolerance = 0.051;  // the .gfs.log prints 6 significant digits
   const slam::RelativeError e = slam::relative_error(slam::relations_from_reference(reference), logger_time, kTolerance);
   const slam::AbsoluteError ate = slam::absolute_trajectory_error(reference, logger_time, kTolerance);
@@ -121,8 +150,8 @@ int run_slam_hybrid(const slam::LaserLog& log, const SlamHybridArgs& a) {
   j["wall_time_s"] = wall;
   j["x_real_time"] = duration / wall;
   j["peak_memory_mb"] = peak_memory_mb();
-  j["error_vs_reference"] = score(logger_time, reference_log_for(log.path));
-  j["parameters_yaml"] = dump_hybrid_config({options.filter, {}, {}});
+  j["error_vs_reference"] = score(logger_time, log, reference_log_for(log.path));
+  j["parameters_yaml"] = dump_hybrid_config({options.filter, {}, {}, options.landmarks});
   std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
   spdlog::info("done in {:.1f} s ({:.1f}x real time): {} landmarks from {} observations, {} fusions; wrote {}/map.png",
                wall, duration / wall, r.features.size(), r.observations, r.fusions, a.out);

@@ -42,6 +42,28 @@ TEST(HybridCli, MapsTheFirstScansOfFr101AndScoresThem) {
   fs::remove_all(out);
 }
 
+// CSAIL's reference is a Radish corrected log without usable stamps: its scans are paired
+// with the raw log's by their ranges; csail.yaml's extractor settings reach the run.
+TEST(HybridCli, ScoresCsailAgainstItsCorrectedLogWithTheCsailConfig) {
+  const std::string log = std::string(LOOKAHEAD_SHARED_DIR) + "/data/mit-csail/csail-oldcarmen.log";
+  if (!fs::exists(log)) GTEST_SKIP() << log << " not found";
+  const fs::path out = temp_dir("csail");
+  const std::string config = std::string(LOOKAHEAD_SOURCE_DIR) + "/config/hybrid/csail.yaml";
+  ASSERT_EQ(run("slam " + log + " --method hybrid --max-scans 400 --particles 30 --config " + config + " --out " +
+                    out.string(),
+                out / "log.txt"),
+            0);
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(out / "run.json"));
+  const auto& e = j["error_vs_reference"];
+  ASSERT_TRUE(e.contains("trans_mean_m")) << "no reference found or paired";
+  EXPECT_NE(e["reference"].get<std::string>().find("csail.corrected.log"), std::string::npos);
+  EXPECT_GT(e["relations_used"].get<int>(), 50);  // ~1 corrected scan per 5 raw ones
+  EXPECT_LT(e["trans_mean_m"].get<double>(), 0.5);
+  EXPECT_NE(j["parameters_yaml"].get<std::string>().find("split_tolerance: 0.12"), std::string::npos);
+  EXPECT_GT(j["landmark_observations"].get<int>(), 4 * 400) << "csail.yaml should give several landmarks per scan";
+  fs::remove_all(out);
+}
+
 TEST(HybridCli, SimulationFiguresAndABadConfig) {
   const fs::path out = temp_dir("sim");
   // The paper's feature density (35 in 120 m x 120 m): 6 features in 50 m x 50 m.

@@ -70,6 +70,22 @@ void visit_sections(HybridConfig& c, V&& v) {
   v("threads", t.threads, "0 = all cores");
   v("failure_sigma", t.failure_sigma, "failure: truth beyond this many std ...");
   v("failure_iterations", t.failure_iterations, "... for more than this many iterations");
+  ScanLandmarkOptions& l = c.scan_landmarks;
+  v.section("scan_landmarks");
+  v("max_range", l.max_range, "beams used up to; on logs also the filter's sensor range [m]");
+  v("break_distance", l.break_distance, "a run of beams breaks where neighbours are farther apart [m] (+ 3 r dphi)");
+  v("split_tolerance", l.split_tolerance, "split a run where a point is this far from the chord [m]");
+  v("min_points", l.min_points, "beams per segment");
+  v("min_length", l.min_length, "segment length [m]");
+  v("corner_min_angle", l.corner_min_angle, "two segments meet at least this sharply for a corner [rad]");
+  v("corner_max_gap", l.corner_max_gap, "the corner lies this close to the shared beam [m]");
+  v("occlusion_margin", l.occlusion_margin, "a line end is free when the next beam is this much farther or missing [m]");
+  v("continuation_distance", l.continuation_distance, "... unless that beam lies this close to the segment's line [m]");
+  v("min_incidence", l.min_incidence, "a line end's beam meets its line at least this steeply [rad]");
+  v("line_ends", l.line_ends, "report free line ends (else corners only)");
+  v("corner_sigma", l.corner_sigma, "corner position std [m]");
+  v("end_sigma_across", l.end_sigma_across, "line end std across its line [m]");
+  v("end_sigma_along", l.end_sigma_along, "line end std along its line, plus the beam gap [m]");
 }
 
 }  // namespace
@@ -87,6 +103,7 @@ HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& sou
     if (!(c.filter.fusion.period > 0.0)) throw std::invalid_argument("fusion.period must be > 0");
     if (c.study.alphas.size() != c.study.betas.size()) throw std::invalid_argument("study.alphas and study.betas differ in length");
     if (!(c.simulation.dt > 0.0)) throw std::invalid_argument("simulation.dt must be > 0");
+    validate(c.scan_landmarks);
   } catch (const std::invalid_argument& e) {
     throw ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
   }

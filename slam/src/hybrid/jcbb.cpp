@@ -25,12 +25,16 @@ class Search {
       : items_(items), candidates_(c), p_(p), confidence_(confidence), max_nodes_(max_nodes),
         by_item_(static_cast<std::size_t>(items)) {
     for (std::size_t k = 0; k < c.size(); ++k) by_item_[static_cast<std::size_t>(c[k].item)].push_back(k);
+    // H_k P once per candidate: a node then costs O(m^2 n) for its m pairs, not O(m n^2).
+    hp_.reserve(c.size());
+    for (const PairingCandidate& k : c) hp_.push_back(k.jacobian * p);
     best_.target_of.assign(static_cast<std::size_t>(items), -1);
   }
 
   JcbbResult run() {
     std::vector<std::size_t> chosen;
-    recurse(0, chosen);
+    recurse(0, chosen, 0.0);
+    best_.nodes = nodes_;
     return best_;
   }
 
@@ -39,40 +43,48 @@ class Search {
   double joint_nis(const std::vector<std::size_t>& chosen) const {
     const Eigen::Index m = 2 * static_cast<Eigen::Index>(chosen.size());
     Eigen::VectorXd nu(m);
-    Eigen::MatrixXd h(m, p_.cols());
-    Eigen::MatrixXd r = Eigen::MatrixXd::Zero(m, m);
-    for (std::size_t k = 0; k < chosen.size(); ++k) {
-      const PairingCandidate& c = candidates_[chosen[k]];
-      const Eigen::Index at = 2 * static_cast<Eigen::Index>(k);
-      nu.segment<2>(at) = c.nu;
-      h.middleRows(at, 2) = c.jacobian;
-      r.block<2, 2>(at, at) = c.noise;
+    Eigen::MatrixXd s(m, m);
+    for (std::size_t a = 0; a < chosen.size(); ++a) {
+      const PairingCandidate& ca = candidates_[chosen[a]];
+      const Eigen::Index at = 2 * static_cast<Eigen::Index>(a);
+      nu.segment<2>(at) = ca.nu;
+      for (std::size_t b = 0; b <= a; ++b) {
+        const Eigen::Index bt = 2 * static_cast<Eigen::Index>(b);
+        s.block<2, 2>(at, bt) = hp_[chosen[a]] * candidates_[chosen[b]].jacobian.transpose();
+        s.block<2, 2>(bt, at) = s.block<2, 2>(at, bt).transpose();
+      }
+      s.block<2, 2>(at, at) += ca.noise;
     }
-    const Eigen::MatrixXd s = h * p_ * h.transpose() + r;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(s);
     const double nis = nu.dot(ldlt.solve(nu));
     return nis <= chi2_quantile(static_cast<int>(m), confidence_) ? nis : INFINITY;
   }
 
-  void recurse(int item, std::vector<std::size_t>& chosen) {
+  // `nis` is the joint NIS of `chosen`. Adding pairings never lowers a joint NIS (the
+  // smaller set's S is a principal submatrix of the larger's), so a branch that can at
+  // best tie the most pairings found, and already has the larger NIS, cannot win: it is
+  // cut. The result is the same as the exhaustive search; dense maps with many tied
+  // hypotheses no longer expand them all.
+  void recurse(int item, std::vector<std::size_t>& chosen, double nis) {
+    const int have = static_cast<int>(chosen.size());
+    const int reachable = have + (items_ - item);
+    if (reachable < best_.pairings || (reachable == best_.pairings && nis >= best_.nis)) return;
     if (++nodes_ > max_nodes_) {
       best_.search_truncated = true;
       return;
     }
-    const int have = static_cast<int>(chosen.size());
     if (item == items_) {
-      const double nis = have == 0 ? 0.0 : joint_nis(chosen);
-      if (have > best_.pairings || (have == best_.pairings && nis < best_.nis)) record(chosen, nis);
+      record(chosen, nis);
       return;
     }
     for (std::size_t k : by_item_[static_cast<std::size_t>(item)]) {
       if (target_taken(chosen, candidates_[k].target)) continue;
       chosen.push_back(k);
-      if (std::isfinite(joint_nis(chosen))) recurse(item + 1, chosen);
+      const double with = joint_nis(chosen);
+      if (std::isfinite(with)) recurse(item + 1, chosen, with);
       chosen.pop_back();
     }
-    // Leaving this item unpaired can only help if the rest could still beat the best.
-    if (have + (items_ - item - 1) >= best_.pairings) recurse(item + 1, chosen);
+    recurse(item + 1, chosen, nis);  // this item unpaired
   }
 
   bool target_taken(const std::vector<std::size_t>& chosen, int target) const {
@@ -96,6 +108,7 @@ class Search {
   int max_nodes_;
   int nodes_ = 0;
   std::vector<std::vector<std::size_t>> by_item_;
+  std::vector<Eigen::MatrixXd> hp_;  ///< per candidate: H P (2 x n)
   JcbbResult best_;
 };
 

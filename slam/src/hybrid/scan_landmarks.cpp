@@ -3,6 +3,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace lookahead::slam::hybrid {
 namespace {
@@ -26,6 +28,12 @@ double distance_to_chord(const Eigen::Vector2d& p, const Eigen::Vector2d& a, con
   return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / n;
 }
 
+Eigen::Vector2d point_of(const LaserScan& scan, std::size_t beam) {
+  const double r = scan.ranges[beam];
+  const Pose2 p = scan.laser_offset.compose({r * std::cos(scan.bearing(beam)), r * std::sin(scan.bearing(beam)), 0.0});
+  return {p.x, p.y};
+}
+
 // Runs of consecutive returns without a jump.
 std::vector<std::vector<Beam>> runs_of(const LaserScan& scan, const ScanLandmarkOptions& o) {
   std::vector<std::vector<Beam>> runs(1);
@@ -35,8 +43,7 @@ std::vector<std::vector<Beam>> runs_of(const LaserScan& scan, const ScanLandmark
       if (!runs.back().empty()) runs.emplace_back();
       continue;
     }
-    const Pose2 p = scan.laser_offset.compose({r * std::cos(scan.bearing(i)), r * std::sin(scan.bearing(i)), 0.0});
-    const Beam beam{i, r, {p.x, p.y}};
+    const Beam beam{i, r, point_of(scan, i)};
     auto& run = runs.back();
     const double limit = o.break_distance + 3.0 * r * std::abs(scan.angle_increment);
     if (!run.empty() && (beam.index != run.back().index + 1 || (beam.point - run.back().point).norm() > limit)) {
@@ -86,12 +93,25 @@ bool intersect(const Segment& s, const Segment& t, Eigen::Vector2d& at) {
 }
 
 // The end of a run is free (a true line end) when the beam beyond it returns far behind or
-// not at all; a nearer neighbour occludes it.
-bool end_is_free(const LaserScan& scan, const Beam& end, long step, const ScanLandmarkOptions& o) {
+// not at all; a nearer neighbour occludes it. A farther return that lies on the segment's
+// own line is the same wall continuing (cut by max_range, or seen at grazing incidence
+// where the beam spacing exceeds the break distance): no end there.
+bool end_is_free(const LaserScan& scan, const Beam& end, const Segment& s, long step, const ScanLandmarkOptions& o) {
   const long j = static_cast<long>(end.index) + step;
   if (j < 0 || j >= static_cast<long>(scan.ranges.size())) return false;  // edge of the field of view
   const std::size_t k = static_cast<std::size_t>(j);
-  return !scan.is_return(k) || scan.ranges[k] > end.range + o.occlusion_margin;
+  if (!scan.is_return(k)) return true;
+  if (scan.ranges[k] <= end.range + o.occlusion_margin) return false;
+  const Eigen::Vector2d n(-s.direction.y(), s.direction.x());
+  return std::abs(n.dot(point_of(scan, k) - s.centre)) > o.continuation_distance;
+}
+
+// The beam meets the segment's line at least min_incidence steeply at the end: at grazing
+// incidence the last return is set by the beam spacing and moves with the robot.
+bool end_is_steep(const Beam& end, const Segment& s, const LaserScan& scan, const ScanLandmarkOptions& o) {
+  const Eigen::Vector2d origin(scan.laser_offset.x, scan.laser_offset.y);
+  const Eigen::Vector2d beam = (end.point - origin).normalized();
+  return std::abs(beam.x() * s.direction.y() - beam.y() * s.direction.x()) >= std::sin(o.min_incidence);
 }
 
 ScanLandmark line_end(const Eigen::Vector2d& p, const Segment& s, double range, const LaserScan& scan,
@@ -126,14 +146,32 @@ std::vector<ScanLandmark> extract_scan_landmarks(const LaserScan& scan, const Sc
       out.push_back({ScanLandmark::Kind::kCorner, c, o.corner_sigma * o.corner_sigma * Eigen::Matrix2d::Identity()});
     }
     if (!o.line_ends || segs.empty()) continue;
-    if (segs.front().first == 0 && end_is_free(scan, run.front(), -1, o)) {
-      out.push_back(line_end(segs.front().a, segs.front(), run.front().range, scan, o));
+    const Segment &head = segs.front(), &tail = segs.back();
+    if (head.first == 0 && end_is_free(scan, run.front(), head, -1, o) && end_is_steep(run.front(), head, scan, o)) {
+      out.push_back(line_end(head.a, head, run.front().range, scan, o));
     }
-    if (segs.back().last == run.size() - 1 && end_is_free(scan, run.back(), +1, o)) {
-      out.push_back(line_end(segs.back().b, segs.back(), run.back().range, scan, o));
+    if (tail.last == run.size() - 1 && end_is_free(scan, run.back(), tail, +1, o) && end_is_steep(run.back(), tail, scan, o)) {
+      out.push_back(line_end(tail.b, tail, run.back().range, scan, o));
     }
   }
   return out;
+}
+
+void validate(const ScanLandmarkOptions& o) {
+  const auto require = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("scan_landmarks.") + what);
+  };
+  require(o.max_range > 0.0, "max_range must be > 0");
+  require(o.break_distance > 0.0, "break_distance must be > 0");
+  require(o.split_tolerance > 0.0, "split_tolerance must be > 0");
+  require(o.min_points >= 2, "min_points must be >= 2");
+  require(o.min_length >= 0.0, "min_length must be >= 0");
+  require(o.corner_min_angle > 0.0 && o.corner_min_angle <= M_PI / 2, "corner_min_angle must be in (0, pi/2]");
+  require(o.corner_max_gap > 0.0, "corner_max_gap must be > 0");
+  require(o.occlusion_margin >= 0.0, "occlusion_margin must be >= 0");
+  require(o.continuation_distance >= 0.0, "continuation_distance must be >= 0");
+  require(o.min_incidence >= 0.0 && o.min_incidence < M_PI / 2, "min_incidence must be in [0, pi/2)");
+  require(o.corner_sigma > 0.0 && o.end_sigma_across > 0.0 && o.end_sigma_along > 0.0, "sigmas must be > 0");
 }
 
 RangeBearing to_observation(const ScanLandmark& l) {

@@ -49,6 +49,25 @@ TEST(HybridConfig, BadInputNamesFileLineKeyAndValue) {
   }
   EXPECT_THROW(parse_hybrid_config("existence:\n  alpha: 1.5\n", "h.yaml"), ParseError);
   EXPECT_THROW(parse_hybrid_config("study:\n  alphas: [1.0]\n  betas: [0.0, 0.1]\n", "h.yaml"), ParseError);
+  EXPECT_THROW(parse_hybrid_config("scan_landmarks:\n  min_points: 1\n", "h.yaml"), ParseError);
+  EXPECT_THROW(parse_hybrid_config("scan_landmarks:\n  corner_min_angle: 2.0\n", "h.yaml"), ParseError);
+  try {
+    parse_hybrid_config("scan_landmarks:\n  split_tolerance: 0.05\n  min_lenght: 1\n", "h.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "scan_landmarks.min_lenght");
+  }
+}
+
+TEST(HybridConfig, ScanLandmarkOptionsAreRead) {
+  const HybridConfig c = parse_hybrid_config(
+      "scan_landmarks:\n  max_range: 12\n  min_points: 5\n  line_ends: false\n  corner_sigma: 0.08\n", "h.yaml");
+  EXPECT_DOUBLE_EQ(c.scan_landmarks.max_range, 12.0);
+  EXPECT_EQ(c.scan_landmarks.min_points, 5);
+  EXPECT_FALSE(c.scan_landmarks.line_ends);
+  EXPECT_DOUBLE_EQ(c.scan_landmarks.corner_sigma, 0.08);
+  EXPECT_DOUBLE_EQ(c.scan_landmarks.split_tolerance, ScanLandmarkOptions{}.split_tolerance);  // untouched
 }
 
 }  // namespace

@@ -54,6 +54,37 @@ TEST(ScanLandmarks, LaserOffsetMovesLandmarksIntoTheRobotFrame) {
   EXPECT_EQ(near(l, ScanLandmark::Kind::kCorner, 4.5, 3.0, 0.05), 1);
 }
 
+// A wall y = 1.5 m from x = 1 on to x = 40, beyond the 15 m landmark range: its true end
+// (1, 1.5) has nothing behind it; far out the grazing beams step farther apart than the
+// break distance and the occlusion margin, which without the continuation rule reads as
+// a second, false end.
+TEST(ScanLandmarks, NoLineEndWhereTheWallContinues) {
+  constexpr double kWallY = 1.5;
+  LaserScan s;
+  s.angle_min = -M_PI / 2;
+  s.angle_increment = M_PI / 360;
+  s.max_range = 30.0;
+  for (int i = 0; i <= 360; ++i) {
+    const double a = s.bearing(static_cast<std::size_t>(i)), sn = std::sin(a);
+    const double t = sn > 1e-9 ? kWallY / sn : INFINITY;
+    const bool hit = std::isfinite(t) && t * std::cos(a) >= 1.0 && t * std::cos(a) <= 40.0;
+    s.ranges.push_back(static_cast<float>(hit ? t : 30.0));
+  }
+  ScanLandmarkOptions o;
+  const auto far_ends = [](const std::vector<ScanLandmark>& l) {
+    int n = 0;
+    for (const auto& m : l) n += m.kind == ScanLandmark::Kind::kLineEnd && m.point.x() > 3.0;
+    return n;
+  };
+  const auto without = extract_scan_landmarks(s, o);
+  EXPECT_EQ(near(without, ScanLandmark::Kind::kLineEnd, 1.0, kWallY, 0.1), 1);
+  EXPECT_GE(far_ends(without), 1) << "the scene should produce the false end this rule removes";
+  o.continuation_distance = 0.1;
+  const auto with = extract_scan_landmarks(s, o);
+  EXPECT_EQ(near(with, ScanLandmark::Kind::kLineEnd, 1.0, kWallY, 0.1), 1);
+  EXPECT_EQ(far_ends(with), 0);
+}
+
 TEST(ScanLandmarks, ObservationCarriesTheCovariance) {
   ScanLandmark l{ScanLandmark::Kind::kCorner, {0.0, 10.0}, Eigen::Matrix2d::Identity() * 0.0025};
   const RangeBearing z = to_observation(l);

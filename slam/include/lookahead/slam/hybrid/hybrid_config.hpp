@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// YAML configuration of HybridSLAM: the filter, the simulation and the study, in one file
+// YAML configuration of HybridSLAM: the filter, the simulation, the study and the scan
+// landmarks of real logs, in one file
 // (config/hybrid/default.yaml). Unknown keys and bad values are ParseErrors naming the
 // file, the line, the key and the value.
 #pragma once
@@ -7,6 +8,7 @@
 #include <string>
 
 #include "lookahead/slam/hybrid/hybrid_options.hpp"
+#include "lookahead/slam/hybrid/scan_landmarks.hpp"
 #include "lookahead/slam/hybrid/simulation.hpp"
 #include "lookahead/slam/hybrid/study.hpp"
 
@@ -16,6 +18,7 @@ struct HybridConfig {
   HybridOptions filter;
   SimulationOptions simulation;
   StudyOptions study;
+  ScanLandmarkOptions scan_landmarks;  ///< real logs only (`slam --method hybrid`)
 };
 
 HybridConfig load_hybrid_config(const std::string& path, const HybridConfig& base = {});

@@ -4,7 +4,8 @@
 // at fusion) is paired with at most one target j (a mapped feature); a pairing set is
 // jointly compatible when the stacked innovation passes a chi-square test under the joint
 // covariance H P H^T + R. The search returns the compatible set with the most pairings
-// (ties: the smallest joint NIS).
+// (ties: the smallest joint NIS). Branch and bound on both: a branch that cannot exceed
+// the best pairing count and already has a larger joint NIS is cut (exact, see jcbb.cpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -27,6 +28,7 @@ struct JcbbResult {
   int pairings = 0;
   double nis = 0.0;            ///< joint normalised innovation squared of the pairing
   bool search_truncated = false;  ///< the node cap stopped the search early
+  int nodes = 0;               ///< search nodes expanded (counted against the cap)
 };
 
 /// `candidates` holds only individually compatible pairs (the caller's gate).

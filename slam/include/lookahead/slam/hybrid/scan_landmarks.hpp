@@ -19,6 +19,7 @@
 
 namespace lookahead::slam::hybrid {
 
+/// Defaults and units are documented in config/hybrid/default.yaml (section scan_landmarks).
 struct ScanLandmarkOptions {
   double max_range = 15.0;         ///< beams used up to [m]
   double break_distance = 0.25;    ///< a run breaks where consecutive points are farther [m] (+ 3 r dphi)
@@ -28,11 +29,17 @@ struct ScanLandmarkOptions {
   double corner_min_angle = 1.0471975511965976;  ///< 60 deg: lines meet at least this sharply
   double corner_max_gap = 0.15;    ///< the intersection lies this close to the shared beam [m]
   double occlusion_margin = 0.5;   ///< a neighbour this much farther (or missing) leaves the end free [m]
-  bool line_ends = true;
+  /// ... unless it lies this close to the segment's line (the wall goes on) [m]
+  double continuation_distance = 0.0;
+  double min_incidence = 0.0;      ///< a line end's beam meets its line at least this steeply [rad]
+  bool line_ends = true;           ///< report free line ends (else corners only)
   double corner_sigma = 0.05;      ///< [m]
   double end_sigma_across = 0.05;  ///< [m]
   double end_sigma_along = 0.10;   ///< [m] (plus the beam gap)
 };
+
+/// Throws std::invalid_argument naming the first impossible option.
+void validate(const ScanLandmarkOptions& options);
 
 struct ScanLandmark {
   enum class Kind { kCorner, kLineEnd };
