@@ -163,9 +163,8 @@ void add_child_evidence(OccupancyGrid& into, const OccupancyGrid& child) {
         const int l = t->log_odds[static_cast<std::size_t>(i)];
         if (l == GridTile::kUnknown) continue;
         const CellIndex cell{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)};
-        const int old = into.raw_log_odds(cell);
-        if (old == l) continue;
-        into.add_log_odds(cell, l - (old == GridTile::kUnknown ? 0 : old));
+        if (into.is_known(cell)) continue;
+        into.add_log_odds(cell, l);
       }
     }
   }

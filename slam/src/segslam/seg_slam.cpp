@@ -109,6 +109,10 @@ LookaheadWindow SegSlam::window_after(std::size_t scan) const {
 
 namespace {
 
+// Matches are cached by their guess rounded to this [m] (and 0.1 rad): half the coarse
+// search's reach, so the search from the rounded guess still covers the true pose.
+constexpr double kGuessStep = 1.0;
+
 // Distance from (x, y) to the nearest pose of a submap's own path [m].
 double distance_to_path(const GridSubmap& s, double x, double y) {
   double best = std::numeric_limits<double>::infinity();
@@ -171,7 +175,7 @@ std::uint64_t SegSlam::localization_seed(const std::tuple<std::size_t, long, lon
 }
 
 WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w) {
-  const auto key = std::make_tuple(candidate, std::lround(guess.x / 0.5), std::lround(guess.y / 0.5),
+  const auto key = std::make_tuple(candidate, std::lround(guess.x / kGuessStep), std::lround(guess.y / kGuessStep),
                                    std::lround(guess.theta / 0.1));
   WindowMatch m;
   bool found = false;
@@ -183,7 +187,7 @@ WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, con
   if (!found) {
     // Searched from the rounded guess, so the result does not depend on which particle asked
     // first (determinism under threads).
-    const Pose2 rounded{std::get<1>(key) * 0.5, std::get<2>(key) * 0.5, normalize_angle(std::get<3>(key) * 0.1)};
+    const Pose2 rounded{std::get<1>(key) * kGuessStep, std::get<2>(key) * kGuessStep, normalize_angle(std::get<3>(key) * 0.1)};
     std::shared_ptr<const IcpTarget> target;
     {
       const std::lock_guard<std::mutex> lock(cache_mutex_);
@@ -214,14 +218,13 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const LookaheadWindo
   const bool segment = should_segment(p.submap_updates, p.motion_error, score, so);
   std::vector<std::size_t> ids;
   std::vector<WindowMatch> matches;
-  // Periodic matching waits for the period and, like the temporal-separation criterion,
-  // does not start over in a submap just entered (hysteresis, sec. 4.5.1).
-  const bool periodic = p.updates_since_match >= options_.matching.period_updates &&
-                        p.submap_updates >= options_.matching.period_updates;
-  if (segment || periodic) {
-    matches = match_candidates(p, w, ids, rng);
-    p.updates_since_match = 0;
-  }
+  // Periodic matching runs at the same updates for every particle, so particles that share
+  // a history ask for the same match in the same update and share it through the cache; like
+  // the temporal-separation criterion, it does not start over in a submap just entered
+  // (hysteresis, sec. 4.5.1).
+  const int period = options_.matching.period_updates;
+  const bool periodic = stats_.updates % static_cast<std::size_t>(period) == 0 && p.submap_updates >= period;
+  if (segment || periodic) matches = match_candidates(p, w, ids, rng);
   std::vector<double> weights;
   for (const WindowMatch& m : matches) weights.push_back(m.weight);
   const ChoiceDraw draw = draw_submap_choice(segment, weights, options_.matching, rng);  // eq. 3
@@ -284,7 +287,6 @@ void SegSlam::update(std::size_t k) {
     p.submap.interval.t_end = scans_[k].timestamp;
     p.submap.exit = p.pose;
     ++p.submap_updates;
-    ++p.updates_since_match;
     p.motion_error += motion_error_increment(u, options_.segmentation);
   }
   // Deviation: a fresh submap has nothing to weigh its first scans against; it gets the mean
@@ -322,7 +324,7 @@ void SegSlam::store_closed(SegParticle& p, Transition& t) {
     stats_.match_events.push_back({last_update_, t.candidate, t.weight});
   }
   // Sec. 6: a re-entry registered well enough is merged into the submap it matched, so
-  // repeated traversals add no maps.
+  // repeated traversals add no maps (a locked one adds no evidence either).
   if (!options_.locking.merge || parent == kNoSubmap || t.closed_entry_error > options_.locking.merge_max_error) return;
   if (segmap_.merge_into_parent(id, add_child_evidence)) {
     ++stats_.merged;

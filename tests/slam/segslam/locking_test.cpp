@@ -57,7 +57,7 @@ TEST(SegMapMerge, ChildEvidenceGoesToTheParentAndTheChildDropsItsMap) {
   EXPECT_EQ(temporal_chain(m, open).size(), 4u);
 }
 
-TEST(GridMerge, ParentTakesTheChildsCellsAndKeepsItsOwn) {
+TEST(GridMerge, ParentGainsTheChildsNewCellsAndKeepsItsOwn) {
   const auto world = test::room_world();
   OccupancyGrid parent;
   for (double x = 1; x < 5; x += 0.5) insert_scan(parent, {x, 1, 0}, test::simulate_scan(world, {x, 1, 0}, {}), {});
@@ -67,16 +67,29 @@ TEST(GridMerge, ParentTakesTheChildsCellsAndKeepsItsOwn) {
   add_child_evidence(parent, child);
   CellIndex lo, hi;
   ASSERT_TRUE(child.known_bounds(lo, hi));
-  int differing = 0, newly_known = 0;
+  int new_cells = 0, new_cells_differing = 0, known_cells_changed = 0, child_revised = 0;
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {
       const CellIndex c{x, y};
-      differing += parent.raw_log_odds(c) != child.raw_log_odds(c) || parent.is_obstacle(c) != child.is_obstacle(c);
-      newly_known += child.is_known(c) && !before.is_known(c);
+      if (before.is_known(c)) {
+        known_cells_changed += parent.raw_log_odds(c) != before.raw_log_odds(c);
+        child_revised += child.raw_log_odds(c) != before.raw_log_odds(c);
+      } else if (child.is_known(c)) {
+        ++new_cells;
+        new_cells_differing += parent.raw_log_odds(c) != child.raw_log_odds(c) || parent.is_obstacle(c) != child.is_obstacle(c);
+      }
     }
   }
-  EXPECT_EQ(differing, 0);
-  EXPECT_GT(newly_known, 100);
+  EXPECT_GT(new_cells, 100);
+  EXPECT_EQ(new_cells_differing, 0);
+  EXPECT_GT(child_revised, 0);  // the child did write cells the parent knew ...
+  EXPECT_EQ(known_cells_changed, 0);  // ... and the parent kept its own evidence there
+  // The distance field follows the new obstacles.
+  for (int y = lo.y; y <= hi.y; ++y) {
+    for (int x = lo.x; x <= hi.x; ++x) {
+      if (!before.is_known({x, y}) && child.is_obstacle({x, y})) EXPECT_EQ(parent.dist2({x, y}), 0);
+    }
+  }
   // Tiles the child never wrote are still shared with the parent as it was.
   EXPECT_GT(parent.tiles_shared_with(before), 0u);
 }

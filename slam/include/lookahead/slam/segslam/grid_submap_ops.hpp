@@ -67,10 +67,13 @@ WindowMatch localize_window(const OccupancyGrid& candidate, const LookaheadWindo
                             const Pose2& guess, const MatchingOptions& options,
                             const LikelihoodFieldModel& likelihood, std::uint64_t seed);
 
-/// Sec. 6 merging, "adding the evidence grids": brings `into` (the parent's map) to the
-/// child's log-odds in every cell the child changed (its tiles not shared with `into`).
-/// Deviation: the child is a copy-on-write copy of its parent, so its cells already hold the
-/// parent's evidence plus its own; adding them whole would count the parent's twice.
+/// Sec. 6 merging, "adding the evidence grids": the cells the child observed (in its tiles
+/// not shared with `into`) that `into` (the parent's map) has never observed take the
+/// child's log-odds. Deviation: the child is a copy-on-write copy of its parent, so its
+/// cells already hold the parent's evidence plus its own (adding would count the parent's
+/// twice), and overwriting cells the parent knows lets one particle's drift erode a map all
+/// particles share (the "evidence erosion" locking is meant to avoid; measured worse on the
+/// Intel loop): the parent's evidence is kept, only its coverage grows.
 void add_child_evidence(OccupancyGrid& into, const OccupancyGrid& child);
 
 /// Submaps of a map sample pasted into one grid of log-odds (the independence assumption:

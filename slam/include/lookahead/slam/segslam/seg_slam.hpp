@@ -40,7 +40,6 @@ struct SegParticle {
   double log_weight = 0.0;
   int submap_updates = 0;      ///< filter updates in the open submap
   double motion_error = 0.0;   ///< eq. 13-14, accumulated in the open submap [m]
-  int updates_since_match = 0; ///< since the last matching attempt
   /// err_ICP of the match that opened the submap [m]; infinite for a fresh submap.
   double entry_error = std::numeric_limits<double>::infinity();
 };
@@ -106,7 +105,7 @@ class SegSlam {
   void store_closed(SegParticle& p, Transition& t);
   void resample_if_needed();
 
-  /// Matches of this update by (candidate, guess rounded to 0.5 m / 0.1 rad): resampled
+  /// Matches of this update by (candidate, guess rounded to 1 m / 0.1 rad): resampled
   /// particles share their history and ask for the same match.
   WindowMatch cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w);
   std::uint64_t localization_seed(const std::tuple<std::size_t, long, long, long>& key) const;
