@@ -60,6 +60,9 @@ nlohmann::json statistics_json(const SegSlam& filter) {
   j["match_attempts"] = st.match_attempts;
   j["pruned_submaps"] = st.pruned;
   j["live_submaps"] = filter.segmap().live_count();
+  j["locked_submaps"] = st.locked;
+  j["merged_submaps"] = st.merged;
+  j["submaps_with_maps"] = filter.segmap().map_count();
   j["segments"] = filter.segmap().segment_count();
   j["neff_history"] = st.neff;
   nlohmann::json events = nlohmann::json::array();

@@ -19,8 +19,10 @@
 #
 # Usage: bench/segslam/loop_study.sh [BUILD=build] [OUT=bench/results/segslam_loop]
 #   env: RUNS (default 20), FIRST_SEED (default 1; seeds FIRST_SEED..RUNS, so a study can be
-#   continued in the same OUT), PARTICLES (default "1 5 10 20 40 100"), JOBS (default 2).
-#   The report covers every runs-*.txt in OUT.
+#   continued in the same OUT), PARTICLES (default "1 5 10 20 40 100"), JOBS (default 2),
+#   METHODS (default "rbpf segslam"; "segslam-locking" is SegSLAM with
+#   config/segslam/locking.yaml: locking and merging on). The report covers every
+#   runs-*.txt in OUT.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD=${1:-build}
@@ -30,6 +32,7 @@ RUNS=${RUNS:-20}
 FIRST_SEED=${FIRST_SEED:-1}
 PARTICLES=${PARTICLES:-"1 5 10 20 40 100"}
 JOBS=${JOBS:-2}
+METHODS=${METHODS:-"rbpf segslam"}
 mkdir -p "$OUT"
 [[ -x $BUILD/lookahead && -x $BUILD/bench/synth_odometry ]] || { echo "build lookahead and synth_odometry first" >&2; exit 1; }
 
@@ -50,8 +53,9 @@ PY
 "$BUILD/bench/synth_odometry" "$OUT/intel-loop-truth.log" "$OUT/intel-loop.log" --seed 1 --kb 0.02 > /dev/null
 
 run() {  # run METHOD N SEED
-  local dir=$OUT/runs/$1-$2-$3
-  "$BUILD/lookahead" slam "$OUT/intel-loop.log" --method "$1" --particles "$2" --seed "$3" --threads 1 \
+  local dir=$OUT/runs/$1-$2-$3 method=(--method "$1")
+  [[ $1 == segslam-locking ]] && method=(--method segslam --segslam-config config/segslam/locking.yaml)
+  "$BUILD/lookahead" slam "$OUT/intel-loop.log" "${method[@]}" --particles "$2" --seed "$3" --threads 1 \
     --config config/segslam/intel_loop_rbpf.yaml --map-samples 1 --out "$dir" > "$dir.log" 2>&1
   local err time
   err=$(python3 bench/segslam/loop_error.py "$dir/trajectory.txt" "$OUT/intel-loop-truth.log")
@@ -61,7 +65,7 @@ run() {  # run METHOD N SEED
 export -f run
 export OUT BUILD
 mkdir -p "$OUT/runs"
-for n in $PARTICLES; do for s in $(seq "$FIRST_SEED" "$RUNS"); do for m in rbpf segslam; do echo "$m $n $s"; done; done; done |
+for n in $PARTICLES; do for s in $(seq "$FIRST_SEED" "$RUNS"); do for m in $METHODS; do echo "$m $n $s"; done; done; done |
   xargs -P "$JOBS" -L 1 bash -c 'run "$@"' _ | tee "$OUT/runs-$FIRST_SEED.txt"
 
 python3 - "$OUT" <<'PY' | tee "$OUT/report.md"
@@ -74,11 +78,14 @@ commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'], capture_output=
 cpu = [l.split(':')[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')][0]
 print(f"commit {commit}, {cpu}; loaded machine (other builds running): times are indicative")
 print()
-print("| particles | runs | RBPF error m (mean / std) | SegSLAM error m (mean / std) | RBPF time s (median) | SegSLAM time s (median) |")
-print("|---|---|---|---|---|---|")
+methods = [m for m in ('rbpf', 'segslam', 'segslam-locking') if any(k[0] == m for k in by)]
+print("| particles | runs | " + " | ".join(f"{m} error m (mean / std)" for m in methods) + " | "
+      + " | ".join(f"{m} time s (median)" for m in methods) + " |")
+print("|---|---|" + "---|" * (2 * len(methods)))
+f = lambda v: f"{st.mean(v):.2f} / {st.stdev(v):.2f}" if len(v) > 1 else (f"{v[0]:.2f} / -" if v else "-")
+med = lambda v: f"{st.median(v):.1f}" if v else "-"
 for n in sorted({k[1] for k in by}):
-    r, g = by.get(('rbpf', n), []), by.get(('segslam', n), [])
-    f = lambda v: f"{st.mean(v):.2f} / {st.stdev(v):.2f}" if len(v) > 1 else (f"{v[0]:.2f} / -" if v else "-")
-    med = lambda v: f"{st.median(v):.1f}" if v else "-"
-    print(f"| {n} | {len(r)} | {f([e for e, _ in r])} | {f([e for e, _ in g])} | {med([t for _, t in r])} | {med([t for _, t in g])} |")
+    cells = [by.get((m, n), []) for m in methods]
+    print(f"| {n} | {len(cells[0])} | " + " | ".join(f([e for e, _ in c]) for c in cells) + " | "
+          + " | ".join(med([t for _, t in c]) for c in cells) + " |")
 PY

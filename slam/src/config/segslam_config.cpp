@@ -42,6 +42,13 @@ void visit_sections(SegSlamOptions& o, V&& v) {
   v("min_inlier_ratio", m.min_inlier_ratio, "matches with fewer inliers are discarded");
   v("use_localization_filter", m.use_localization_filter, "match by a localisation filter (eq. 19), not ICP (eq. 18)");
   v("localization_particles", m.localization_particles, "particles of the localisation filter");
+  auto& l = o.locking;
+  v.section("locking");
+  v("lock", l.lock, "lock well-registered re-entered submaps (localise, no writes)");
+  v("lock_max_error", l.lock_max_error, "lock when the re-entry match error is at most this [m]");
+  v("lock_min_merged_visits", l.lock_min_merged_visits, "and the matched submap has this many merged re-entries");
+  v("merge", l.merge, "merge closed well-registered re-entries into the matched submap");
+  v("merge_max_error", l.merge_max_error, "merge when the re-entry match error was at most this [m]");
   v.section("offline");
   v("map_samples", o.offline.map_samples, "map samples of the minimum-entropy search");
 }

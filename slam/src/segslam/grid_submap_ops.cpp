@@ -107,7 +107,8 @@ Pose2 coarse_search(const OccupancyGrid& map, const Points2& cloud, const Pose2&
   const double step = std::max(0.8 * map.distance_radius_cells() * map.resolution(), o.bin_size);
   const Pose2 coarse = coarse_grid_search(map, thin, guess, o.search_radius, step, o.search_angle, 0.05);
   const PreparedScan scan = as_scan(cloud);
-  return grid_search(coarse, step, step / 4, 0.05, 0.0125,
+  // Half the coarse step around its best pose, on a grid ICP converges from (5 x 5 x 5).
+  return grid_search(coarse, step / 2, step / 4, 0.025, 0.0125,
                      [&](const Pose2& p) { return likelihood.hit_ratio(map, p, scan); });
 }
 
@@ -149,6 +150,24 @@ WindowMatch match_window(const OccupancyGrid& candidate, const IcpTarget& target
   m.ok = icp.inlier_ratio >= o.min_inlier_ratio;
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
   return m;
+}
+
+void add_child_evidence(OccupancyGrid& into, const OccupancyGrid& child) {
+  CellIndex lo, hi;
+  if (!child.known_bounds(lo, hi)) return;
+  for (int ty = lo.y >> GridTile::kBits; ty <= hi.y >> GridTile::kBits; ++ty) {
+    for (int tx = lo.x >> GridTile::kBits; tx <= hi.x >> GridTile::kBits; ++tx) {
+      const GridTile* t = child.tile(tx, ty);
+      if (!t || t == into.tile(tx, ty)) continue;  // an untouched tile is the parent's own
+      for (int i = 0; i < GridTile::kCells; ++i) {
+        const int l = t->log_odds[static_cast<std::size_t>(i)];
+        if (l == GridTile::kUnknown) continue;
+        const CellIndex cell{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)};
+        if (into.is_known(cell)) continue;
+        into.add_log_odds(cell, l);
+      }
+    }
+  }
 }
 
 void MapCanvas::paste(const OccupancyGrid& map, const Pose2& frame, const OccupancyGrid* parent) {

@@ -24,6 +24,7 @@ namespace lookahead::slam::segslam {
 struct SegSlam::Transition {
   bool closed_one = false;
   GridSubmap closed;  ///< the submap the particle left, to store in the SegMap
+  double closed_entry_error = 0.0;  ///< err_ICP of the match that opened `closed`
   std::size_t candidate = kNoSubmap;
   double weight = 0.0;
 };
@@ -108,6 +109,10 @@ LookaheadWindow SegSlam::window_after(std::size_t scan) const {
 
 namespace {
 
+// Matches are cached by their guess rounded to this [m] (and 0.1 rad): half the coarse
+// search's reach, so the search from the rounded guess still covers the true pose.
+constexpr double kGuessStep = 1.0;
+
 // Distance from (x, y) to the nearest pose of a submap's own path [m].
 double distance_to_path(const GridSubmap& s, double x, double y) {
   double best = std::numeric_limits<double>::infinity();
@@ -130,7 +135,11 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
   };
   std::vector<Candidate> candidates;
   for (std::size_t i = 1; i < sample.size(); ++i) {
-    const GridSubmap& c = segmap_.at(sample[i].id);
+    // A merged submap's evidence is in its parent, which shares its frame.
+    std::size_t id = sample[i].id;
+    while (segmap_.at(id).merged) id = segmap_.at(id).parent;
+    const GridSubmap& c = segmap_.at(id);
+    if (std::any_of(candidates.begin(), candidates.end(), [&](const auto& k) { return k.id == id; })) continue;
     // Sec. 4.5.1 winnowing: temporal separation, then spatial proximity. A submap in the
     // particle's own frame (already re-entered) is no candidate. Deviation: proximity is the
     // distance to the candidate's own path (the robot stood there), not any observed cell:
@@ -140,7 +149,7 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
     const Pose2 guess = sample[i].frame.inverse().compose(p.pose);
     const double d = distance_to_path(c, guess.x, guess.y);
     if (d > o.proximity_radius || !has_observed_near(c.map, guess.x, guess.y, o.proximity_radius)) continue;
-    candidates.push_back({d, sample[i].id, guess});
+    candidates.push_back({d, id, guess});
   }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
   if (candidates.size() > static_cast<std::size_t>(o.max_candidates)) candidates.resize(static_cast<std::size_t>(o.max_candidates));
@@ -166,7 +175,7 @@ std::uint64_t SegSlam::localization_seed(const std::tuple<std::size_t, long, lon
 }
 
 WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w) {
-  const auto key = std::make_tuple(candidate, std::lround(guess.x / 0.5), std::lround(guess.y / 0.5),
+  const auto key = std::make_tuple(candidate, std::lround(guess.x / kGuessStep), std::lround(guess.y / kGuessStep),
                                    std::lround(guess.theta / 0.1));
   WindowMatch m;
   bool found = false;
@@ -178,7 +187,7 @@ WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, con
   if (!found) {
     // Searched from the rounded guess, so the result does not depend on which particle asked
     // first (determinism under threads).
-    const Pose2 rounded{std::get<1>(key) * 0.5, std::get<2>(key) * 0.5, normalize_angle(std::get<3>(key) * 0.1)};
+    const Pose2 rounded{std::get<1>(key) * kGuessStep, std::get<2>(key) * kGuessStep, normalize_angle(std::get<3>(key) * 0.1)};
     std::shared_ptr<const IcpTarget> target;
     {
       const std::lock_guard<std::mutex> lock(cache_mutex_);
@@ -209,14 +218,13 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const LookaheadWindo
   const bool segment = should_segment(p.submap_updates, p.motion_error, score, so);
   std::vector<std::size_t> ids;
   std::vector<WindowMatch> matches;
-  // Periodic matching waits for the period and, like the temporal-separation criterion,
-  // does not start over in a submap just entered (hysteresis, sec. 4.5.1).
-  const bool periodic = p.updates_since_match >= options_.matching.period_updates &&
-                        p.submap_updates >= options_.matching.period_updates;
-  if (segment || periodic) {
-    matches = match_candidates(p, w, ids, rng);
-    p.updates_since_match = 0;
-  }
+  // Periodic matching runs at the same updates for every particle, so particles that share
+  // a history ask for the same match in the same update and share it through the cache; like
+  // the temporal-separation criterion, it does not start over in a submap just entered
+  // (hysteresis, sec. 4.5.1).
+  const int period = options_.matching.period_updates;
+  const bool periodic = stats_.updates % static_cast<std::size_t>(period) == 0 && p.submap_updates >= period;
+  if (segment || periodic) matches = match_candidates(p, w, ids, rng);
   std::vector<double> weights;
   for (const WindowMatch& m : matches) weights.push_back(m.weight);
   const ChoiceDraw draw = draw_submap_choice(segment, weights, options_.matching, rng);  // eq. 3
@@ -233,11 +241,16 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const LookaheadWindo
     next.entry = matches[draw.match].pose;  // the pose in the candidate's frame
     next.parent = t.candidate;
     next.map = segmap_.at(t.candidate).map;  // copy-on-write: shares every tile until written
+    const LockingOptions& lo = options_.locking;
+    next.locked = lo.lock && matches[draw.match].icp_error <= lo.lock_max_error &&
+                  segmap_.at(t.candidate).merged_visits >= lo.lock_min_merged_visits;
   }
   next.exit = next.entry;
   next.path.push_back({last_update_, next.entry});
   t.closed_one = true;
   t.closed = std::move(p.submap);
+  t.closed_entry_error = p.entry_error;
+  p.entry_error = t.candidate == kNoSubmap ? std::numeric_limits<double>::infinity() : matches[draw.match].icp_error;
   p.submap = std::move(next);
   p.pose = p.submap.entry;
   p.submap_updates = 0;
@@ -263,8 +276,10 @@ void SegSlam::update(std::size_t k) {
     transitions[static_cast<std::size_t>(i)] = predict_submap(p, w, rng);
     const bool is_warm = p.submap_updates >= rbpf_.warmup_updates || p.submap.parent != kNoSubmap;
     const double before = p.log_weight;
+    // A locked submap is localised in, never written (sec. 6).
     failed[static_cast<std::size_t>(i)] =
-        advance_particle(models, p.submap.map, p.pose, p.log_weight, u, scans_[k], prepared, is_warm, rng);
+        p.submap.locked ? draw_particle(models, p.submap.map, p.pose, p.log_weight, u, prepared, is_warm, rng)
+                        : advance_particle(models, p.submap.map, p.pose, p.log_weight, u, scans_[k], prepared, is_warm, rng);
     gain[static_cast<std::size_t>(i)] = p.log_weight - before;
     warm[static_cast<std::size_t>(i)] = is_warm;
     p.submap.path.push_back({k, p.pose});
@@ -272,7 +287,6 @@ void SegSlam::update(std::size_t k) {
     p.submap.interval.t_end = scans_[k].timestamp;
     p.submap.exit = p.pose;
     ++p.submap_updates;
-    ++p.updates_since_match;
     p.motion_error += motion_error_increment(u, options_.segmentation);
   }
   // Deviation: a fresh submap has nothing to weigh its first scans against; it gets the mean
@@ -282,15 +296,7 @@ void SegSlam::update(std::size_t k) {
   for (std::size_t i = 0; i < gain.size(); ++i) if (warm[i]) sum += gain[i], ++count;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     if (!warm[i] && count > 0) particles_[i].log_weight += sum / count;
-    Transition& t = transitions[i];
-    if (!t.closed_one) continue;
-    particles_[i].submap.predecessor = segmap_.add(std::move(t.closed));
-    if (t.candidate == kNoSubmap) {
-      ++stats_.segmentations;
-    } else {
-      ++stats_.matches;
-      stats_.match_events.push_back({last_update_, t.candidate, t.weight});
-    }
+    if (transitions[i].closed_one) store_closed(particles_[i], transitions[i]);
   }
   stats_.match_failures += static_cast<std::size_t>(std::count(failed.begin(), failed.end(), 1));
   last_update_ = k;
@@ -303,6 +309,26 @@ void SegSlam::update(std::size_t k) {
     for (auto it = icp_targets_.begin(); it != icp_targets_.end();) {
       it = segmap_.contains(it->first) ? std::next(it) : icp_targets_.erase(it);
     }
+  }
+}
+
+void SegSlam::store_closed(SegParticle& p, Transition& t) {
+  const std::size_t parent = t.closed.parent;
+  const std::size_t id = segmap_.add(std::move(t.closed));
+  p.submap.predecessor = id;
+  if (t.candidate == kNoSubmap) {
+    ++stats_.segmentations;
+  } else {
+    ++stats_.matches;
+    stats_.locked += p.submap.locked ? 1 : 0;
+    stats_.match_events.push_back({last_update_, t.candidate, t.weight});
+  }
+  // Sec. 6: a re-entry registered well enough is merged into the submap it matched, so
+  // repeated traversals add no maps (a locked one adds no evidence either).
+  if (!options_.locking.merge || parent == kNoSubmap || t.closed_entry_error > options_.locking.merge_max_error) return;
+  if (segmap_.merge_into_parent(id, add_child_evidence)) {
+    ++stats_.merged;
+    icp_targets_.erase(parent);  // its map changed
   }
 }
 

@@ -33,6 +33,9 @@ void validate(const SegSlamOptions& o) {
   require(m.icp_sigma > 0 && m.translation_sigma > 0 && m.null_error >= 0, "matching sigmas > 0, null_error >= 0");
   require(m.min_inlier_ratio >= 0 && m.min_inlier_ratio <= 1, "matching.min_inlier_ratio in 0..1");
   require(m.localization_particles >= 10, "matching.localization_particles >= 10");
+  const LockingOptions& l = o.locking;
+  require(l.lock_max_error >= 0 && l.merge_max_error >= 0, "locking.*_max_error >= 0");
+  require(l.lock_min_merged_visits >= 0, "locking.lock_min_merged_visits >= 0");
   require(o.offline.map_samples >= 1, "offline.map_samples >= 1");
 }
 

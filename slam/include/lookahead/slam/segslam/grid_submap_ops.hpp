@@ -8,6 +8,7 @@
 //   has_observed_near      spatial-proximity winnowing (sec. 4.5.1)
 //   match_window           ICP of the window's binned points onto a candidate (sec. 4.5)
 //   MapCanvas              a map sample's submaps in one map, for entropy (eq. 20-22)
+//   add_child_evidence     merging a re-entered submap into its parent (sec. 6)
 #pragma once
 
 #include <cstdint>
@@ -65,6 +66,15 @@ WindowMatch match_window(const OccupancyGrid& candidate, const IcpTarget& target
 WindowMatch localize_window(const OccupancyGrid& candidate, const LookaheadWindow& window,
                             const Pose2& guess, const MatchingOptions& options,
                             const LikelihoodFieldModel& likelihood, std::uint64_t seed);
+
+/// Sec. 6 merging, "adding the evidence grids": the cells the child observed (in its tiles
+/// not shared with `into`) that `into` (the parent's map) has never observed take the
+/// child's log-odds. Deviation: the child is a copy-on-write copy of its parent, so its
+/// cells already hold the parent's evidence plus its own (adding would count the parent's
+/// twice), and overwriting cells the parent knows lets one particle's drift erode a map all
+/// particles share (the "evidence erosion" locking is meant to avoid; measured worse on the
+/// Intel loop): the parent's evidence is kept, only its coverage grows.
+void add_child_evidence(OccupancyGrid& into, const OccupancyGrid& child);
 
 /// Submaps of a map sample pasted into one grid of log-odds (the independence assumption:
 /// overlapping evidence adds). A match child pasted after its parent adds only the cells it

@@ -40,6 +40,31 @@ class SegMap {
     return static_cast<std::size_t>(std::count_if(submaps_.begin(), submaps_.end(), [](const auto& s) { return s != nullptr; }));
   }
   [[nodiscard]] std::size_t segment_count() const { return segments_.size(); }
+  /// Live submaps that hold a map of their own (not merged into a parent).
+  [[nodiscard]] std::size_t map_count() const {
+    return static_cast<std::size_t>(std::count_if(submaps_.begin(), submaps_.end(), [](const auto& s) { return s && !s->merged; }));
+  }
+
+  /// Merges the stored match child `id` into its parent (sec. 6: "submaps can be quickly
+  /// merged by adding the evidence grids when their relative positions become certain"; a
+  /// match child shares its parent's frame, so the match gives the relative position):
+  /// `add_evidence(parent_map, child_map)` adds what the child observed to the parent's map,
+  /// then the child drops its map and keeps only its interval, poses and links. Returns
+  /// false (and changes nothing) when `id` is merged already or has no live parent.
+  template <class AddEvidence>
+  bool merge_into_parent(std::size_t id, AddEvidence&& add_evidence) {
+    if (!contains(id) || at(id).merged || !contains(at(id).parent)) return false;
+    const std::size_t p = at(id).parent;
+    auto parent = std::make_shared<SubmapT>(at(p));
+    add_evidence(parent->map, at(id).map);
+    ++parent->merged_visits;
+    auto child = std::make_shared<SubmapT>(at(id));
+    child->map = Map{};
+    child->merged = true;
+    submaps_[p] = std::move(parent);
+    submaps_[id] = std::move(child);
+    return true;
+  }
 
   /// The live members of the segment holding `id` (the submaps with its interval).
   [[nodiscard]] std::vector<std::size_t> segment_of(std::size_t id) const {

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -39,7 +40,8 @@ struct SegParticle {
   double log_weight = 0.0;
   int submap_updates = 0;      ///< filter updates in the open submap
   double motion_error = 0.0;   ///< eq. 13-14, accumulated in the open submap [m]
-  int updates_since_match = 0; ///< since the last matching attempt
+  /// err_ICP of the match that opened the submap [m]; infinite for a fresh submap.
+  double entry_error = std::numeric_limits<double>::infinity();
 };
 
 /// A re-entry: at `scan`, a particle moved into a copy of submap `candidate`.
@@ -55,6 +57,8 @@ struct SegSlamStatistics {
   std::size_t matches = 0;           ///< particle submaps started as a match
   std::size_t match_attempts = 0;    ///< candidates matched by ICP
   std::size_t pruned = 0;            ///< non-viable submaps dropped
+  std::size_t locked = 0;            ///< re-entered submaps locked (localisation only)
+  std::size_t merged = 0;            ///< closed re-entered submaps merged into their parent
   std::vector<double> neff;
   std::vector<MatchEvent> match_events;
 };
@@ -98,10 +102,10 @@ class SegSlam {
   Transition predict_submap(SegParticle& p, const LookaheadWindow& w, std::mt19937_64& rng);
   std::vector<WindowMatch> match_candidates(const SegParticle& p, const LookaheadWindow& w,
                                             std::vector<std::size_t>& ids, std::mt19937_64& rng);
-  void apply(SegParticle& p, Transition& t);
+  void store_closed(SegParticle& p, Transition& t);
   void resample_if_needed();
 
-  /// Matches of this update by (candidate, guess rounded to 0.5 m / 0.1 rad): resampled
+  /// Matches of this update by (candidate, guess rounded to 1 m / 0.1 rad): resampled
   /// particles share their history and ask for the same match.
   WindowMatch cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w);
   std::uint64_t localization_seed(const std::tuple<std::size_t, long, long, long>& key) const;

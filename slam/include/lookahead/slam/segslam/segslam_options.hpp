@@ -67,6 +67,24 @@ struct MatchingOptions {
   double min_inlier_ratio = 0.6;
 };
 
+/// Locking and merging (sec. 6; the paper gives the ideas, not the criteria). Deviation:
+/// "well known" and "relative position certain" are both judged by the ICP error of the
+/// match that re-entered the submap. Off by default: on the Intel loop neither lowers the
+/// loop-closure error (README, SegSLAM).
+struct LockingOptions {
+  /// Lock a particle's re-entered submap (localise in the matched map, write nothing) ...
+  bool lock = false;
+  /// ... when its match's err_ICP is at most this [m] ...
+  double lock_max_error = 0.05;
+  /// ... and the matched submap has absorbed at least this many merged re-entries. >= 0
+  int lock_min_merged_visits = 0;
+  /// Merge a closed re-entered submap into the submap it matched (the cells it observed
+  /// that the matched one had not are added; its own map is dropped) ...
+  bool merge = false;
+  /// ... when its match's err_ICP was at most this [m].
+  double merge_max_error = 0.08;
+};
+
 /// Offline map sampling (sec. 5.4).
 struct OfflineOptions {
   int map_samples = 30;  ///< full map samples searched for the minimum entropy map. >= 1
@@ -75,6 +93,7 @@ struct OfflineOptions {
 struct SegSlamOptions {
   SegmentationOptions segmentation;
   MatchingOptions matching;
+  LockingOptions locking;
   OfflineOptions offline;
 };
 

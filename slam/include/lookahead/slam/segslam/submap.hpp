@@ -45,6 +45,14 @@ struct Submap {
   Map map;
   /// The particle's poses at its filter updates inside the interval (scan, pose in frame).
   std::vector<std::pair<std::size_t, Pose>> path;
+  /// Locked (sec. 6: "well-known segments can be locked to prevent updates, such that
+  /// particles that reenter those segments perform localization"): `map` is never written.
+  bool locked = false;
+  /// Merged into its parent (sec. 6): its evidence went into the parent's map and `map` was
+  /// dropped; interval, poses and links stay, so trajectories still pass through it.
+  bool merged = false;
+  /// Re-entries merged into this submap so far (how well known it is).
+  int merged_visits = 0;
 };
 
 }  // namespace lookahead::slam::segslam
