@@ -1,9 +1,14 @@
 #!/bin/bash
 # SPDX-License-Identifier: MIT
-# P-SLAM reproduction 1: the symmetric maze, nearest-frontier exploration against look-ahead
-# mapping (config/study/pslam_maze.yaml), then the table of bench/pslam/summarize_runs.py.
-# Run from the repository root after building: bash bench/pslam/maze_study.sh
+# P-SLAM reproduction 1: the symmetric maze, exploration without and with look-ahead mapping,
+# then the table of bench/pslam/summarize_runs.py. Two protocols:
+#   config/study/pslam_maze.yaml       both to the 95 % coverage goal (4 strategies)
+#   config/study/pslam_maze_full.yaml  the paper's: full coverage against leaving out the
+#                                      predicted regions
+# Run from the repository root after building: bash bench/pslam/maze_study.sh [STUDY.yaml]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-./build/lookahead study config/study/pslam_maze.yaml
-python3 bench/pslam/summarize_runs.py out/study/pslam_maze | tee out/study/pslam_maze/pslam_summary.md
+study=${1:-config/study/pslam_maze.yaml}
+out=out/study/$(basename "$study" .yaml)
+./build/lookahead study "$study" --out "$out"
+python3 bench/pslam/summarize_runs.py "$out" | tee "$out/pslam_summary.md"
