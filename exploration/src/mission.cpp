@@ -30,6 +30,10 @@ namespace {
 // the goal lies at most goal_search_radius (1 m) from its cluster.
 constexpr double kRetireRadius = 1.0;
 
+// Steps the reactive stop may hold the robot before its path is given up and replanned
+// from where it stands (2 s at 10 Hz): the stop found something the path does not avoid.
+constexpr int kStopsBeforeReplan = 20;
+
 MissionOptions checked(MissionOptions o) {
   o.validate();
   // The predictive strategy and a filter that uses hypotheses both need predictions made.
@@ -144,7 +148,9 @@ std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x
 }
 
 void Mission::refresh() {
-  if (!map_changed_) return;
+  // A robot held by the reactive stop neither moves nor turns, so the map-change rule
+  // alone would never bring the costmap up to date with what the laser sees ahead.
+  if (!map_changed_ && stop_streak_ == 0) return;
   last_refresh_pose_ = robot_.pose();
   ++stats_.map_refreshes;
   const slam::OccupancyGrid& m = map();
@@ -267,7 +273,9 @@ void Mission::select_new_target() {
     stats_.ended_on_predictions = s.rest_predicted;
   } else if (s.outcome != SelectionOutcome::kPlanned) {
     // Maybe only for now: turn once more to look around, and give up after three tries.
-    if (++unreachable_streak_ >= 3) status_ = MissionStatus::kTrapped;
+    // Frontiers that are only blacklisted for a while are no trap: the robot looks around
+    // until an entry expires (each spot is retried at most max_strikes times).
+    if (!s.waiting_on_blacklist && ++unreachable_streak_ >= 3) status_ = MissionStatus::kTrapped;
     turned_ = 0.0;
   } else {
     unreachable_streak_ = 0;
@@ -285,13 +293,17 @@ void Mission::select_new_target() {
 void Mission::act() {
   if (status_ != MissionStatus::kRunning) return;
   planner::VelocityCommand cmd;
+  if (!follower_) stop_streak_ = 0;
   if (turned_ < options_.initial_turn) {
     cmd.omega = options_.robot.max_turn_rate;  // look around before choosing a target
   } else if (follower_) {
     cmd = follower_->command(estimate());
     if (cmd.v > 0 && path_ahead_blocked(cmd.v)) {
-      cmd.v = 0.0;  // turn on the spot only; the costmap will catch up at the next update
+      cmd.v = 0.0;  // turn on the spot only; the costmap catches up at the next refresh
       ++stats_.safety_stops;
+      hold_or_replan();
+    } else {
+      stop_streak_ = 0;
     }
   }
   const slam::Pose2 before = robot_.pose();
@@ -303,6 +315,17 @@ void Mission::act() {
     ++stats_.collisions;
     status_ = MissionStatus::kCollision;
   }
+}
+
+void Mission::hold_or_replan() {
+  // A stop that outlasts a costmap refresh is not a wall the map had not caught up with:
+  // the robot is off its path, facing a door jamb it cut towards. Waiting for the stuck
+  // clock (30 s) wastes the time; a new plan starts from the nearest free cell, away from it.
+  if (++stop_streak_ < kStopsBeforeReplan) return;
+  stop_streak_ = 0;
+  follower_.reset();
+  path_blocked_ = true;
+  ++stats_.replans;
 }
 
 bool Mission::path_ahead_blocked(double v) const {

@@ -99,6 +99,7 @@ void visit_planning_sections(MissionOptions& o, V&& v) {
   v.section("blacklist");
   v("radius", o.blacklist.radius, "goals this close to a failed one are skipped [m]");
   v("lifetime", o.blacklist.lifetime, "mission seconds an entry lasts");
+  v("max_strikes", o.blacklist.max_strikes, "the n-th entry at one spot lasts for good, >= 1");
   visit_lookahead_section(o.lookahead, v);
 }
 

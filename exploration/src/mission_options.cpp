@@ -66,6 +66,7 @@ void MissionOptions::validate() const {
   require(coverage_goal > 0 && coverage_goal <= 1, "coverage_goal in (0, 1]");
   require(goal_check_period > 0 && metrics_period > 0, "periods > 0");
   require(stuck_time > 0 && max_goal_attempts >= 1, "stuck_time > 0, max_goal_attempts >= 1");
+  require(blacklist.max_strikes >= 1, "blacklist.max_strikes >= 1");
   require(frame_period >= 0, "frame_period >= 0");
   require(free_threshold > 0 && free_threshold < 0.5, "free_threshold in (0, 0.5)");
   require(safety_margin >= 0 && stop_distance >= 0, "safety_margin, stop_distance >= 0");

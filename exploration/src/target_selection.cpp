@@ -63,16 +63,20 @@ double grid_path_bound(const planner::Costmap& cm, double price) {
 }
 
 std::vector<Candidate> price(const SelectionInputs& in, const std::vector<FrontierCluster>& clusters,
-                             const TravelCost& cost, bool& any_reachable) {
+                             const TravelCost& cost, bool& any_reachable, bool& any_waiting) {
   const planner::Costmap& cm = *in.costmap;
   std::vector<Candidate> out;
   any_reachable = false;
+  any_waiting = false;
   for (const FrontierCluster& f : clusters) {
     if (!f.has_goal) continue;
     const double d = cost.at(cm.cell_at({f.goal_x, f.goal_y}));
     if (!std::isfinite(d)) continue;
     any_reachable = true;
-    if (in.blacklist->contains(f.goal_x, f.goal_y, in.now)) continue;
+    if (in.blacklist->contains(f.goal_x, f.goal_y, in.now)) {
+      any_waiting = any_waiting || !in.blacklist->permanent(f.goal_x, f.goal_y);
+      continue;
+    }
     if (in.predicted && in.strategy->uses_prediction()) {
       const PredictedMap& pm = *in.predicted;
       const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
@@ -136,14 +140,15 @@ Selection select_target(const SelectionInputs& in) {
   s.outcome = SelectionOutcome::kUnreachable;
   const auto start = nearest_free(*in.costmap, in.pose.x, in.pose.y, 0.5);
   if (!start) return s;
-  bool any_reachable = false;
+  bool any_reachable = false, any_waiting = false;
   const TravelCost cost = travel_cost(*in.costmap, *start);
-  std::vector<Candidate> candidates = price(in, clusters, cost, any_reachable);
+  std::vector<Candidate> candidates = price(in, clusters, cost, any_reachable, any_waiting);
   s.candidates = candidates.size();
   if (!any_reachable) return s;  // kUnreachable: frontiers only beyond gaps the robot cannot pass
   // Every reachable frontier was tried recently (visited without clearing it, or failed):
-  // frontiers are left that the robot cannot resolve, as good as unreachable.
+  // unreachable for now, and for good once each is blacklisted for good.
   s.outcome = candidates.empty() ? SelectionOutcome::kUnreachable : SelectionOutcome::kPlanFailed;
+  s.waiting_on_blacklist = candidates.empty() && any_waiting;
   for (int attempt = 0; attempt < in.max_attempts && !candidates.empty(); ++attempt) {
     const auto pick = in.strategy->choose(candidates);
     if (!pick) {

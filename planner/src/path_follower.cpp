@@ -22,6 +22,35 @@ Point2 closest_on_segment(Point2 a, Point2 b, Point2 p, double& dist) {
   return q;
 }
 
+// How much path may lead out of the inflated band before it counts as blocked [m]: target
+// selection looks this far for a free cell to start a plan from (nearest_free, 0.5 m).
+constexpr double kMaxEscape = 0.5;
+
+// The robot may stand inside the inflated band (pure pursuit cuts corners, the reactive
+// stop leaves it close to a wall): a plan from there starts with a stretch through blocked
+// cells back to free space. That stretch is the way out, not new walls on the path; it is
+// dropped so only the rest is checked. Returns false when no free point comes within
+// kMaxEscape of arc (the path really is blocked at its start).
+bool drop_escape(const Costmap& costmap, Path& path) {
+  if (costmap.is_free(path.front())) return true;
+  const double step = 0.5 * costmap.resolution();
+  double arc = 0.0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const double len = distance(path[i], path[i + 1]);
+    for (double t = step; t < len + step && arc + std::min(t, len) <= kMaxEscape; t += step) {
+      const double u = std::min(t, len) / std::max(len, 1e-12);
+      const Point2 p{path[i].x + u * (path[i + 1].x - path[i].x), path[i].y + u * (path[i + 1].y - path[i].y)};
+      if (!costmap.is_free(p)) continue;
+      path.erase(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+      path.insert(path.begin(), p);
+      return true;
+    }
+    arc += len;
+    if (arc > kMaxEscape) break;
+  }
+  return false;
+}
+
 }  // namespace
 
 void validate(const FollowerOptions& o) {
@@ -115,7 +144,7 @@ bool PathFollower::path_still_valid(const Costmap& costmap) const {
   Path remaining{projection_};
   remaining.insert(remaining.end(), path_.begin() + static_cast<std::ptrdiff_t>(segment_) + 1,
                    path_.end());
-  return costmap.path_is_free(remaining);
+  return drop_escape(costmap, remaining) && costmap.path_is_free(remaining);
 }
 
 }  // namespace lookahead::planner

@@ -132,5 +132,21 @@ TEST(GoalBlacklist, EntriesExpire) {
   EXPECT_EQ(b.expire(10.5), 0u);
 }
 
+// Regression (the trapped ends): a spot that keeps failing is blacklisted for good after
+// max_strikes entries, so a mission waiting for entries to expire cannot wait forever.
+TEST(GoalBlacklist, TheThirdStrikeLastsForGood) {
+  GoalBlacklist b({0.5, 10.0, 3});
+  EXPECT_FALSE(b.add(1.0, 1.0, 0.0));
+  EXPECT_FALSE(b.permanent(1.0, 1.0));
+  EXPECT_FALSE(b.add(1.2, 1.0, 20.0));  // the same spot (within the radius), second time
+  EXPECT_FALSE(b.contains(1.0, 1.0, 31.0));
+  EXPECT_TRUE(b.add(0.9, 1.1, 40.0));  // third time: for good
+  EXPECT_TRUE(b.permanent(1.0, 1.0));
+  EXPECT_TRUE(b.contains(1.0, 1.0, 1e6));
+  EXPECT_EQ(b.expire(1e6), 1u);
+  EXPECT_FALSE(b.permanent(3.0, 1.0));  // other spots keep their own count
+  EXPECT_FALSE(b.add(3.0, 1.0, 40.0));
+}
+
 }  // namespace
 }  // namespace lookahead::exploration

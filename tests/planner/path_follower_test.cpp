@@ -117,6 +117,26 @@ TEST(PathFollower, PathStillValidUntilAnObstacleAppearsAhead) {
   EXPECT_TRUE(follower.path_still_valid(Costmap(behind, co)));
 }
 
+// Regression (kth_0510034869): a robot that cut a door jamb stands inside the inflated band,
+// and its plan starts with the stretch back out. That stretch is the way out, not new walls:
+// treating it as blocked replanned at every map refresh while the robot turned on the spot.
+TEST(PathFollower, TheWayOutOfTheInflatedBandIsNoBlockedPath) {
+  CostmapOptions co;
+  co.robot_radius = 0.18;
+  const Costmap cm(testing::walled_room(), co);
+  ASSERT_FALSE(cm.is_free(Point2{0.1, 1.5}));  // 0.125 m from the left wall: inflated
+  ASSERT_TRUE(cm.is_free(Point2{0.3, 1.5}));
+  PathFollower out_of_band({{0.1, 1.5}, {0.3, 1.5}, {3.0, 1.5}});
+  EXPECT_TRUE(out_of_band.path_still_valid(cm));
+  // A path that stays in the band for more than the escape length is blocked.
+  PathFollower along_wall({{0.1, 0.5}, {0.1, 2.5}});
+  EXPECT_FALSE(along_wall.path_still_valid(cm));
+  // So is one whose way out ends in a wall further on.
+  slam::OccupancyGrid boxed = testing::walled_room();
+  testing::fill(boxed, 30, 20, 34, 40, true);  // a box across x = 1.5..1.75 m
+  EXPECT_FALSE(out_of_band.path_still_valid(Costmap(boxed, co)));
+}
+
 TEST(PathFollower, RejectsEmptyPathAndBadOptions) {
   EXPECT_THROW(PathFollower(Path{}), std::invalid_argument);
   FollowerOptions o;

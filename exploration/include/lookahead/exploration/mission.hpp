@@ -97,6 +97,7 @@ class Mission {
   void check_end();
   bool goal_still_useful() const;
   bool path_ahead_blocked(double v) const;
+  void hold_or_replan();  ///< counts a reactive stop; gives the path up when it lasts
 
   const World& world_;
   MissionOptions options_;
@@ -128,6 +129,7 @@ class Mission {
   int unreachable_streak_ = 0;
   bool map_changed_ = false;
   bool path_blocked_ = false;  ///< the follower was dropped because new walls block its path
+  int stop_streak_ = 0;        ///< consecutive steps the reactive stop has held the robot
   std::size_t last_resamplings_ = 0, last_best_ = 0;
   slam::Pose2 last_refresh_pose_;
   std::vector<slam::Pose2> true_path_, estimated_path_;

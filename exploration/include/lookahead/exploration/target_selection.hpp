@@ -34,6 +34,9 @@ struct Selection {
   std::size_t clusters = 0, candidates = 0;
   /// kNoFrontier because the strategy skipped every reachable frontier as predicted.
   bool rest_predicted = false;
+  /// kUnreachable only because every reachable frontier is blacklisted for a while: worth
+  /// waiting for the entries to expire, not a trap.
+  bool waiting_on_blacklist = false;
 };
 
 struct SelectionInputs {

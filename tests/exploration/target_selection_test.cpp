@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+// Target selection on a hand-made grid: what the outcome says when the only reachable
+// frontier is blacklisted for a while, and for good.
+#include "lookahead/exploration/target_selection.hpp"
+
+#include <gtest/gtest.h>
+
+#include "lookahead/exploration/goal_blacklist.hpp"
+#include "lookahead/exploration/target_strategy.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+using slam::OccupancyGrid;
+
+// A 3 m x 1.5 m room (5 cm cells), walled except on its right side: one frontier there.
+OccupancyGrid open_room() {
+  OccupancyGrid g;
+  const auto add = [&](int x0, int y0, int x1, int y1, int l) {
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) g.add_log_odds({x, y}, l);
+  };
+  add(0, 0, 59, 29, 3 * g.fixed_miss());
+  add(-1, -1, 60, -1, 3 * g.fixed_hit());
+  add(-1, 30, 60, 30, 3 * g.fixed_hit());
+  add(-1, -1, -1, 30, 3 * g.fixed_hit());
+  return g;
+}
+
+struct Scene {
+  OccupancyGrid map = open_room();
+  planner::Costmap costmap;
+  FrontierDetector frontiers;
+  std::unique_ptr<TargetStrategy> strategy = make_strategy("nearest");
+  GoalBlacklist blacklist{BlacklistOptions{0.5, 60.0, 2}};
+
+  Scene() {
+    planner::CostmapOptions co;
+    co.robot_radius = 0.2;
+    co.unknown_is_free = true;
+    costmap = planner::Costmap(map, co);
+    frontiers.rebuild(map);
+  }
+  Selection select(double now) {
+    SelectionInputs in;
+    in.map = &map;
+    in.costmap = &costmap;
+    in.frontiers = &frontiers;
+    in.strategy = strategy.get();
+    in.blacklist = &blacklist;
+    in.pose = {0.5, 0.75, 0.0};
+    in.now = now;
+    in.planner.max_samples = 500;
+    return select_target(in);
+  }
+};
+
+// Regression (50052750 with SLAM, trapped at 94.8 %): frontiers that are only blacklisted
+// for a while counted towards "trapped" as if no way led there.
+TEST(TargetSelection, ABlacklistedFrontierIsWaitedForUntilItsLastStrike) {
+  Scene s;
+  const Selection first = s.select(0.0);
+  ASSERT_EQ(first.outcome, SelectionOutcome::kPlanned);
+  EXPECT_FALSE(first.waiting_on_blacklist);
+
+  EXPECT_FALSE(s.blacklist.add(first.goal_x, first.goal_y, 0.0));
+  const Selection blocked = s.select(1.0);
+  EXPECT_EQ(blocked.outcome, SelectionOutcome::kUnreachable);
+  EXPECT_TRUE(blocked.waiting_on_blacklist);
+
+  EXPECT_EQ(s.select(61.0).outcome, SelectionOutcome::kPlanned);  // the entry expired
+
+  EXPECT_TRUE(s.blacklist.add(first.goal_x, first.goal_y, 61.0));  // second strike of two
+  const Selection given_up = s.select(200.0);
+  EXPECT_EQ(given_up.outcome, SelectionOutcome::kUnreachable);
+  EXPECT_FALSE(given_up.waiting_on_blacklist);
+}
+
+}  // namespace
+}  // namespace lookahead::exploration
