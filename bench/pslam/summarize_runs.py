@@ -39,8 +39,8 @@ def load(folder):
 def main(folder):
     runs = load(folder)
     if not runs: sys.exit(f"{folder}: no run.json found")
-    print(f"| world | strategy | runs | end | time [s] | path [m] | explored | with predictions | final predicted cells right | hypotheses | Psi vs world: mean, > 0.4 |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print(f"| world | strategy | runs | end | time [s] | path [m] | explored | with predictions | all predicted cells right | final predicted cells right | ... inside the building | hypotheses | Psi vs world: mean, > 0.4 |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     all_psi, times = [], defaultdict(list)
     for (world, strategy), rs in sorted(runs.items()):
         t = [r['simulated_time_s'] for r in rs]; times[world, strategy] = t
@@ -49,11 +49,13 @@ def main(folder):
         pr = [r.get('prediction', {}) for r in rs]
         covp = [x.get('coverage_with_predictions', c) for x, c in zip(pr, cov)]
         acc = [x['final_predicted_accuracy'] for x in pr if x.get('final_predicted_area_m2', 0) > 0]
+        acc_in = [x['final_predicted_accuracy_inside'] for x in pr if x.get('final_predicted_area_inside_m2', 0) > 0]
+        acc_all = [x['cell_accuracy'] for x in pr if x.get('hypotheses', 0) > 0]
         psi = [v for x in pr for v in x.get('psi_world', [])]; all_psi += psi
         ends = ', '.join(sorted({r['status'] for r in rs}))
         f = lambda v, d=0: '%.*f +- %.*f' % (d, mean_std(v)[0], d, mean_std(v)[1]) if v else '-'
         psi_txt = '%.2f, %.0f %%' % (sum(psi) / len(psi), 100 * sum(v > 0.4 for v in psi) / len(psi)) if psi else '-'
-        print(f"| {world} | {strategy} | {len(rs)} | {ends} | {f(t)} | {f(p, 1)} | {f(cov, 3)} | {f(covp, 3)} | {f(acc, 2)} | {sum(len(x.get('psi_world', [])) for x in pr)} | {psi_txt} |")
+        print(f"| {world} | {strategy} | {len(rs)} | {ends} | {f(t)} | {f(p, 1)} | {f(cov, 3)} | {f(covp, 3)} | {f(acc_all, 2)} | {f(acc, 2)} | {f(acc_in, 2)} | {sum(len(x.get('psi_world', [])) for x in pr)} | {psi_txt} |")
     print()
     for world in sorted({w for w, _ in times}):
         strategies = sorted(s for w, s in times if w == world)

@@ -51,6 +51,8 @@ nlohmann::json prediction_json(const PredictionSummary& p) {
           {"cell_accuracy", p.cell_accuracy}, {"mean_prediction_s", p.mean_seconds},
           {"max_prediction_s", p.max_seconds}, {"final_predicted_area_m2", p.final_predicted_area},
           {"final_predicted_accuracy", p.final_predicted_accuracy},
+          {"final_predicted_area_inside_m2", p.final_predicted_area_inside},
+          {"final_predicted_accuracy_inside", p.final_predicted_accuracy_inside},
           {"coverage_with_predictions", p.coverage_with_predictions},
           {"ended_on_predictions", p.ended_on_predictions},
           {"filter", {{"hypotheses", p.filter_hypotheses}, {"predicted_updates", p.filter_predicted_updates},

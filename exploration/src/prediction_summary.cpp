@@ -2,6 +2,9 @@
 #include "lookahead/exploration/prediction_summary.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace lookahead::exploration {
 namespace {
@@ -28,11 +31,35 @@ void summarize_records(const std::vector<PredictionRecord>& records, PredictionS
   s.cell_accuracy = cells ? static_cast<double>(correct) / static_cast<double>(cells) : 0.0;
 }
 
+// Cells of the world within `margin` of its reachable area (what a robot could observe).
+std::vector<std::uint8_t> observable_cells(const World& world, const ReachableArea& area, double margin) {
+  const int w = world.width(), h = world.height();
+  std::vector<std::uint8_t> out(area.reachable.size(), 0);
+  if (area.reachable.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h)) return out;
+  const int r = static_cast<int>(std::ceil(margin / world.resolution()));
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!area.reachable[static_cast<std::size_t>(y * w + x)]) continue;
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx)
+          if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h)
+            out[static_cast<std::size_t>((y + dy) * w + x + dx)] = 1;
+    }
+  }
+  return out;
+}
+
 // The look-ahead map where the robot's map is still unknown, against the world.
 void summarize_final_map(const Mission& m, const PredictedMap& pm, double occupied, PredictionSummary& s) {
   slam::CellIndex lo, hi;
   if (!pm.cells().known_bounds(lo, hi)) return;
-  std::size_t cells = 0, correct = 0;
+  const std::vector<std::uint8_t> observable = observable_cells(m.world(), m.reachable(), kObservableMargin);
+  const auto inside = [&](double x, double y) {
+    const slam::CellIndex c = m.world().cell_of({x, y});
+    if (c.x < 0 || c.y < 0 || c.x >= m.world().width() || c.y >= m.world().height()) return false;
+    return observable[static_cast<std::size_t>(c.y * m.world().width() + c.x)] != 0;
+  };
+  std::size_t cells = 0, correct = 0, cells_inside = 0, correct_inside = 0;
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {
       if (!pm.predicted(m.map(), {x, y})) continue;
@@ -40,12 +67,20 @@ void summarize_final_map(const Mission& m, const PredictedMap& pm, double occupi
       pm.cells().cell_center({x, y}, cx, cy);
       ++cells;
       const bool wall = pm.cells().probability({x, y}) >= occupied;
-      correct += prediction_matches_world(wall, m.world(), cx, cy);
+      const bool right = prediction_matches_world(wall, m.world(), cx, cy);
+      correct += right;
+      if (inside(cx, cy)) {
+        ++cells_inside;
+        correct_inside += right;
+      }
     }
   }
   const double res = pm.cells().resolution();
   s.final_predicted_area = static_cast<double>(cells) * res * res;
   s.final_predicted_accuracy = cells ? static_cast<double>(correct) / static_cast<double>(cells) : 0.0;
+  s.final_predicted_area_inside = static_cast<double>(cells_inside) * res * res;
+  s.final_predicted_accuracy_inside =
+      cells_inside ? static_cast<double>(correct_inside) / static_cast<double>(cells_inside) : 0.0;
   s.coverage_with_predictions = m.coverage_meter().coverage(m.map(), [&](double x, double y) {
     const slam::CellIndex c = pm.cells().cell_at(x, y);
     return pm.predicted(m.map(), c) && pm.cells().probability(c) < occupied && !m.world().is_occupied(x, y);

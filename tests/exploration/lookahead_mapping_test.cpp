@@ -105,6 +105,12 @@ TEST(LookaheadMission, PredictiveMazeRunChecksItsHypotheses) {
   EXPECT_GT(s.requests, 3);
   EXPECT_GT(s.hypotheses, 0);
   EXPECT_GT(s.cell_accuracy, 0.8);  // the maze is regular: most predicted cells are right
+  // What is left predicted inside the building is a part of all that is left predicted.
+  EXPECT_LE(s.final_predicted_area_inside, s.final_predicted_area + 1e-9);
+  if (s.final_predicted_area_inside > 0) {
+    EXPECT_GT(s.final_predicted_accuracy_inside, 0.0);
+    EXPECT_LE(s.final_predicted_accuracy_inside, 1.0);
+  }
   EXPECT_EQ(a.statistics().collisions, 0);
   EXPECT_EQ(static_cast<int>(a.lookahead()->records().size()), s.requests);
 }

@@ -23,11 +23,19 @@ struct PredictionSummary {
   /// The look-ahead map at the end: cells predicted and still unexplored.
   double final_predicted_area = 0.0;  ///< [m^2]
   double final_predicted_accuracy = 0.0;
+  /// The same over the cells the robot could observe: within kObservableMargin of the
+  /// reachable area. Outside it lie predictions beyond the outer walls and deep inside
+  /// pillars, which no robot can check (the paper's Fig. 7(d) discards them by "assuming
+  /// the environmental boundary is known").
+  double final_predicted_area_inside = 0.0;  ///< [m^2]
+  double final_predicted_accuracy_inside = 0.0;
   /// Coverage counting predicted free cells the world confirms as covered.
   double coverage_with_predictions = 0.0;
   bool ended_on_predictions = false;
   std::size_t filter_hypotheses = 0, filter_predicted_updates = 0, filter_used = 0, filter_rejected = 0;
 };
+
+constexpr double kObservableMargin = 0.15;  ///< [m]: a wall's thickness beyond the free space
 
 PredictionSummary summarize_predictions(const Mission& mission);
 
