@@ -136,10 +136,11 @@ TEST(OctreeCanvas, PastesInFramesAndCountsCopiedEvidenceOnce) {
   EXPECT_EQ(canvas.voxels(), 2U);
   const EvidenceOctree out = canvas.to_octree();
   EXPECT_NEAR(*out.log_odds(*g.key_of({1.0, 0.0, 0.0})), a.options().log_odds_hit, 1e-5);  // once, not twice
-  // A frame turned by 90 deg puts (1, 0, 0) at (0, 1, 0).
+  // A frame turned by 90 deg puts the voxel centred at (1.1, 0.1, 0.1) at (-0.1, 1.1, 0.1).
   OctreeCanvas turned(a.options());
   turned.paste(a, Pose4{0, 0, 0, M_PI / 2});
-  EXPECT_TRUE(turned.to_octree().log_odds(*g.key_of({0.05, 1.0, 0.0})).has_value());
+  EXPECT_TRUE(turned.to_octree().log_odds(*g.key_of({-0.1, 1.1, 0.1})).has_value());
+  EXPECT_FALSE(turned.to_octree().log_odds(*g.key_of({1.1, 0.1, 0.1})).has_value());
   EXPECT_GT(canvas.entropy(), 0.0);
 }
 
