@@ -9,6 +9,12 @@
 // are the generic code of the 2D filter (seg_map.hpp, map_sampler.hpp, segmentation.hpp,
 // submap_choice.hpp, trajectory_reconstruction.hpp) instantiated for EvidenceOctree + Pose4;
 // the octree operations are in octree_submap_ops.hpp.
+//
+// Deviation: the filter loop is a sibling of the 2D SegSlam class, not one template with it:
+// that class is written against laser scans and the 2D particle step and is being extended
+// (locking, merging) elsewhere; the graph code and the eq. 3/13-14/18 functions are shared.
+// Submap frames are level (x, y, z, yaw), and proximity winnowing also bounds the height
+// difference (the garage's decks share x, y).
 #pragma once
 
 #include <cstddef>
