@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `lookahead slam3d INPUT --method rbpf --out DIR`: 3D mapping with the octree RBPF. INPUT is
+// `lookahead slam3d INPUT --method rbpf|segslam --out DIR`: 3D mapping with the octree RBPF
+// or SegSLAM on octree submaps (slam3d_segslam.hpp). INPUT is
 // `garage` (a generated two-level garage), `geb079` (the real Freiburg 079 OctoMap) or a
 // folder of 3DTK scans. Writes map.bt, trajectory.png, trajectory.txt and run.json (and
 // world.bt for a generated world).
@@ -18,6 +19,7 @@
 #include "lookahead/slam/rbpf3d/rbpf3d.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "slam3d_segslam.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -34,6 +36,8 @@ struct Slam3dArgs {
   int threads = -1;
   std::size_t max_sweeps = 0;
   bool dump_config = false;
+  std::string segslam_config;  ///< --method segslam: YAML on top of segslam3d_defaults()
+  int map_samples = -1;        ///< --method segslam: offline samples (-1: the config's)
 };
 
 struct Input {
@@ -181,16 +185,17 @@ slam::Slam3dOptions options_from(const Slam3dArgs& a) {
 
 int run_slam3d(const Slam3dArgs& a) {
   if (a.dump_config) {
-    std::fputs(slam::dump_slam3d_options({}).c_str(), stdout);
+    // With --method segslam: SegSLAM's own options (config/segslam/garage3d.yaml).
+    std::fputs(a.method == "segslam" ? dump_segslam3d_defaults().c_str() : slam::dump_slam3d_options({}).c_str(), stdout);
     return 0;
-  }
-  if (a.method == "segslam") {
-    throw std::runtime_error(
-        "slam3d --method segslam is not yet available: the SegSLAM core is not on this branch "
-        "(it lands when wip/segslam is merged); use --method rbpf");
   }
   const slam::Slam3dOptions options = options_from(a);
   const Input in = read_input(a, options);
+  if (a.method == "segslam") {
+    run_segslam3d({a.input, input_name(a.input), a.out, a.segslam_config, a.map_samples, a.data_seed}, in.log, options);
+    if (in.world && a.input == "garage") slam::write_octomap(in.world->map, a.out + "/world.bt");
+    return 0;
+  }
   spdlog::info("{} sweeps, {} beams each; {} particles, {:.2f} m voxels", in.log.sweeps.size(),
                in.log.sweeps.front().rays.size(), options.filter.particles,
                options.filter.map.resolution);
@@ -218,7 +223,7 @@ Run add_slam3d_command(CLI::App& app) {
   auto args = std::make_shared<Slam3dArgs>();
   app.add_option("input", args->input, "garage | geb079 | a folder of 3DTK scanNNN.3d/.pose")
       ->capture_default_str();
-  app.add_option("--method", args->method, "rbpf (segslam: after the SegSLAM merge)")
+  app.add_option("--method", args->method, "rbpf | segslam")
       ->check(CLI::IsMember({"rbpf", "segslam"}))
       ->capture_default_str();
   app.add_option("--out", args->out, "output folder")->capture_default_str();
@@ -230,6 +235,10 @@ Run add_slam3d_command(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--max-sweeps", args->max_sweeps, "stop after this many sweeps (0 = all)");
+  app.add_option("--segslam-config", args->segslam_config,
+                 "--method segslam: SegSLAM YAML (see config/segslam/garage3d.yaml)");
+  app.add_option("--map-samples", args->map_samples,
+                 "--method segslam: offline map samples for the min-entropy map.bt");
   app.add_flag("--dump-config", args->dump_config, "print the documented default options and exit");
   return [args] { return run_slam3d(*args); };
 }

@@ -61,10 +61,34 @@ TEST_F(Slam3dCli, ThreeDtkFolderIsAnInput) {
   EXPECT_TRUE(fs::exists(dir / "trajectory.png"));
 }
 
-TEST_F(Slam3dCli, SegslamIsAClearNotYetAvailableError) {
-  const Result r = run("garage --method segslam --out " + dir.string(), dir / "log.txt");
+// SegSLAM on a short garage drive with short segments: the outputs, and the segmentation in
+// run.json.
+TEST_F(Slam3dCli, SegslamWritesMapPictureAndRunJson) {
+  const fs::path yaml = dir / "seg.yaml";
+  std::ofstream(yaml) << "segmentation:\n  min_segment_updates: 3\n  max_motion_error: 0.1\n";
+  const Result r = run("garage --method segslam --particles 2 --max-sweeps 12 --map-samples 2 --segslam-config '" +
+                           yaml.string() + "' --out " + dir.string(),
+                       dir / "log.txt");
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* f : {"map.bt", "world.bt", "trajectory.png", "trajectory.txt", "run.json"}) {
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  }
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "run.json"));
+  EXPECT_EQ(j["method"], "segslam");
+  EXPECT_EQ(j["sweeps"].get<int>(), 12);
+  EXPECT_GE(j["segmentations"].get<int>(), 1);
+  EXPECT_TRUE(j.contains("final_position_error_m"));
+  EXPECT_EQ(j["sample_entropies"].size(), 2U);
+}
+
+TEST_F(Slam3dCli, SegslamConfigErrorsNameTheKey) {
+  const fs::path yaml = dir / "bad.yaml";
+  std::ofstream(yaml) << "matching:\n  icp_sigmaa: 1\n";
+  const Result r = run("garage --method segslam --max-sweeps 3 --segslam-config '" + yaml.string() + "' --out " +
+                           dir.string(),
+                       dir / "log.txt");
   EXPECT_NE(r.code, 0);
-  EXPECT_NE(r.output.find("not yet available"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("icp_sigmaa"), std::string::npos) << r.output;
 }
 
 TEST_F(Slam3dCli, UnknownInputIsAnError) {

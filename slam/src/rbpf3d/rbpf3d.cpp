@@ -8,28 +8,13 @@
 
 #include "lookahead/slam/geometry/pose2.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
+#include "lookahead/slam/rbpf3d/motion3_model.hpp"
 
 namespace lookahead::slam {
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-/// The motion model: the dead-reckoned increment with noise on x, y, z and yaw; roll and
-/// pitch are the IMU's at the sweep's end.
-Pose3 sample_motion(const Pose3& previous, const Pose3& increment, const Euler& imu,
-                    double odometry_yaw_change, const Motion3Options& m, std::mt19937_64& rng) {
-  std::normal_distribution<double> unit(0.0, 1.0);
-  const double travelled = increment.translation().norm();
-  const double sigma_xy = std::max(m.min_xy, m.xy_per_metre * travelled);
-  const double sigma_yaw = std::max(
-      m.min_yaw, m.yaw_per_metre * travelled + m.yaw_per_radian * std::abs(odometry_yaw_change));
-  Eigen::Vector3d position = previous * increment.translation();
-  position += Eigen::Vector3d(sigma_xy * unit(rng), sigma_xy * unit(rng),
-                              m.z_per_metre * travelled * unit(rng));
-  const double yaw = euler_of(previous.linear()).yaw + odometry_yaw_change + sigma_yaw * unit(rng);
-  return make_pose3(position, {imu.roll, imu.pitch, yaw});
 }
 
 }  // namespace
@@ -101,7 +86,7 @@ void Rbpf3d::predict_and_weigh(const RangeSweep& sweep) {
   for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
     Particle3& p = particles_[static_cast<std::size_t>(i)];
     std::mt19937_64 rng(seeds[static_cast<std::size_t>(i)]);
-    p.pose = sample_motion(p.pose, increment, imu, yaw_change, options_.motion, rng);
+    p.pose = sample_motion3(p.pose, increment, imu, yaw_change, options_.motion, rng);
     std::vector<Eigen::Vector3d> world(ends.size());
     for (std::size_t k = 0; k < ends.size(); ++k) world[k] = p.pose * ends[k];
     p.log_weight +=

@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: MIT
+#include "slam3d_segslam.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "lookahead/slam/config/segslam_config.hpp"
+#include "lookahead/slam/octree/octree_io.hpp"
+#include "lookahead/slam/octree/octree_top_view.hpp"
+#include "lookahead/slam/segslam/octree_map_samples.hpp"
+#include "lookahead/slam/segslam/seg_slam3d.hpp"
+#include "process_stats.hpp"
+#include "progress_bar.hpp"
+
+namespace lookahead::app {
+namespace {
+
+using slam::segslam::SegSlam3d;
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+/// Bytes of the particles' open maps and of every map the filter holds (open and stored
+/// submaps), each shared node counted once.
+nlohmann::json memory_json(const SegSlam3d& f) {
+  std::vector<const slam::EvidenceOctree*> all;
+  double unique = 0, total = 0;
+  for (const auto& p : f.particles()) {
+    const slam::OctreeMemory m = p.submap.map.memory();
+    unique += static_cast<double>(m.unique_bytes);
+    total += static_cast<double>(m.total_bytes);
+    all.push_back(&p.submap.map);
+  }
+  for (std::size_t id = 0; id < f.segmap().id_bound(); ++id) {
+    if (f.segmap().contains(id)) all.push_back(&f.segmap().at(id).map);
+  }
+  const double n = static_cast<double>(f.particles().size());
+  const double distinct = static_cast<double>(slam::EvidenceOctree::distinct_bytes(all));
+  nlohmann::json j;
+  j["mean_open_submap_bytes"] = total / n;
+  j["mean_unique_bytes_per_map"] = unique / n;  // what only that particle's open submap holds
+  j["all_maps_distinct_bytes"] = distinct;      // open and stored submaps, shared once
+  j["distinct_bytes_per_particle"] = distinct / n;
+  return j;
+}
+
+void write_trajectory(const std::string& path, const slam::RangeLog3& log, const std::vector<slam::Pose4>& poses) {
+  std::ofstream traj(path);
+  traj << "# t x y z roll pitch yaw (best particle's reconstructed trajectory, eq. 11; roll, pitch: IMU)\n";
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const slam::Euler imu = slam::euler_of(log.sweeps[i].odometry.linear());
+    traj << fmt::format("{:.3f} {:.4f} {:.4f} {:.4f} {:.5f} {:.5f} {:.5f}\n", log.sweeps[i].time, poses[i].x,
+                        poses[i].y, poses[i].z, imu.roll, imu.pitch, poses[i].yaw);
+  }
+}
+
+nlohmann::json statistics_json(const SegSlam3d& f) {
+  const auto& st = f.statistics();
+  nlohmann::json j;
+  j["sweeps"] = st.sweeps;
+  j["updates"] = st.updates;
+  j["resamplings"] = st.resamplings;
+  j["segmentations"] = st.segmentations;
+  j["matches"] = st.matches;
+  j["match_attempts"] = st.match_attempts;
+  j["matching_thread_s"] = st.matching_seconds;
+  j["pruned_submaps"] = st.pruned;
+  j["live_submaps"] = f.segmap().live_count();
+  j["segments"] = f.segmap().segment_count();
+  nlohmann::json events = nlohmann::json::array();
+  for (const auto& e : st.match_events) events.push_back({{"sweep", e.sweep}, {"candidate", e.candidate}, {"weight", e.weight}});
+  j["match_events"] = events;
+  j["neff_history"] = st.neff;
+  return j;
+}
+
+void add_errors(nlohmann::json& j, const slam::RangeLog3& log, const SegSlam3d& f, const std::vector<slam::Pose4>& best) {
+  if (!log.has_truth()) return;
+  const Eigen::Vector3d end = log.sweeps.back().truth->translation();
+  double length = 0;
+  for (std::size_t i = 1; i < log.sweeps.size(); ++i) {
+    length += (log.sweeps[i].truth->translation() - log.sweeps[i - 1].truth->translation()).norm();
+  }
+  j["path_length_m"] = length;
+  j["final_position_error_m"] = (f.estimate().position() - end).norm();
+  j["final_position_error_best_particle_m"] = (best.back().position() - end).norm();
+  j["dead_reckoning_final_error_m"] = (log.sweeps.back().odometry.translation() - end).norm();
+}
+
+}  // namespace
+
+std::string dump_segslam3d_defaults() {
+  return slam::dump_segslam_options(slam::segslam::segslam3d_defaults());
+}
+
+void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const slam::Slam3dOptions& o) {
+  slam::segslam::SegSlam3dOptions options;
+  options.filter = o.filter;
+  if (!run.segslam_config.empty()) {
+    options.segslam = slam::load_segslam_options(run.segslam_config, slam::segslam::segslam3d_defaults());
+  }
+  SegSlam3d filter(options);
+  ProgressBar bar("segslam3d", log.sweeps.size());
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < log.sweeps.size(); ++i) {
+    filter.add_sweep(log.sweeps[i]);
+    bar.update(i + 1, fmt::format("segs {} matches {}", filter.statistics().segmentations, filter.statistics().matches));
+  }
+  filter.finish();
+  bar.finish();
+  const double wall = seconds_since(start);
+  const auto search_start = std::chrono::steady_clock::now();
+  const int samples = run.map_samples >= 1 ? run.map_samples : options.segslam.offline.map_samples;
+  const auto best_map = slam::segslam::min_entropy_search(filter, samples, options.filter.seed);
+  const double search_s = seconds_since(search_start);
+
+  std::filesystem::create_directories(run.out);
+  slam::write_octomap(best_map.best.map, run.out + "/map.bt");
+  const std::size_t best = filter.best_particle();
+  const std::vector<slam::Pose4> poses = filter.trajectory_at_every_sweep(best);
+  write_trajectory(run.out + "/trajectory.txt", log, poses);
+  std::vector<slam::Pose2> odometry;
+  for (const auto& s : log.sweeps) odometry.push_back(slam::Pose4::level_of(s.odometry).planar());
+  slam::segslam::write_segment_picture(
+      run.out + "/trajectory.png", slam::top_view(best_map.best.map), odometry, filter.segmented_trajectory(best),
+      fmt::format("slam3d {} - segslam, {} particles (top view, min-entropy map)", run.name, filter.particles().size()));
+
+  nlohmann::json j = statistics_json(filter);
+  j["input"] = run.input;
+  j["method"] = "segslam";
+  j["particles"] = filter.particles().size();
+  j["seed"] = options.filter.seed;
+  j["data_seed"] = run.data_seed;
+  j["rays_per_sweep"] = log.sweeps.front().rays.size();
+  j["wall_time_s"] = wall;
+  j["offline_search_s"] = search_s;
+  j["map_samples"] = samples;
+  j["map_entropy_nats_m3"] = best_map.best.entropy;
+  j["sample_entropies"] = best_map.entropies;
+  j["map_known_voxels"] = best_map.best.map.known_voxels();
+  j["peak_memory_mb"] = peak_memory_mb();
+  j["memory"] = memory_json(filter);
+  add_errors(j, log, filter, poses);
+  slam::Slam3dOptions with_filter = o;
+  with_filter.filter = options.filter;
+  j["parameters_yaml"] = slam::dump_slam3d_options(with_filter);
+  j["segslam_parameters_yaml"] = slam::dump_segslam_options(options.segslam);
+  std::ofstream(run.out + "/run.json") << j.dump(2) << "\n";
+  if (j.contains("final_position_error_m")) {
+    spdlog::info("final position error {:.2f} m (dead reckoning {:.2f} m) over {:.0f} m; {} segmentations, {} matches",
+                 j["final_position_error_m"].get<double>(), j["dead_reckoning_final_error_m"].get<double>(),
+                 j["path_length_m"].get<double>(), filter.statistics().segmentations, filter.statistics().matches);
+  }
+  spdlog::info("filter {:.1f} s, offline search {:.1f} s, peak {:.0f} MB; wrote {}/trajectory.png and map.bt", wall,
+               search_s, peak_memory_mb(), run.out);
+}
+
+}  // namespace lookahead::app

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+// The map-type-specific operations of SegSLAM (Fairfield et al. 2010, sec. 4.3-4.5, 5.4) for
+// the copy-on-write evidence octree and level poses (x, y, z, yaw): the 3D counterpart of
+// grid_submap_ops.hpp. The graph code (SegMap, map samples, trajectory reconstruction, the
+// eq. 3/18 choice, segmentation) is the same generic code the 2D filter uses.
+//   insert / score a sweep   the rbpf3d particle step (ray_insertion, octree_likelihood)
+//   predictive_score         eq. 17 on the look-ahead window
+//   has_observed_near        spatial-proximity winnowing (sec. 4.5.1)
+//   match_window             coarse search + point-to-plane ICP on binned points, eq. 18
+//   OctreeCanvas             a map sample's submaps in one octree, eq. 22 entropy
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "lookahead/slam/geometry/pose4.hpp"
+#include "lookahead/slam/octree/evidence_octree.hpp"
+#include "lookahead/slam/segslam/point_icp3.hpp"
+#include "lookahead/slam/segslam/segslam_options.hpp"
+
+namespace lookahead::slam::segslam {
+
+/// A look-ahead window's end points in the level frame of the robot at its first sweep
+/// (dead-reckoned; position and yaw of that sweep, no roll or pitch).
+struct SweepWindow {
+  Points3 scored;  ///< a thinned sample for eq. 17 and the coarse search
+  Points3 cloud;   ///< every end point, binned, for ICP
+};
+
+/// Eq. 17: the share of the window's scored points that `map` explains (an occupied voxel
+/// among the 27 around the point) with the robot at `pose` at the window's start; -1 when
+/// the window is empty.
+double predictive_score(const EvidenceOctree& map, const Pose4& pose, const SweepWindow& window);
+
+/// Sec. 4.5.1 spatial proximity: does `map` hold observed voxels within `radius` of `p`?
+bool has_observed_near(const EvidenceOctree& map, const Eigen::Vector3d& p, double radius);
+
+/// Voxels within one voxel of an occupied one, as a dense bitmap over the map's occupied
+/// bounding box: O(1) tests for the coarse search.
+class NearOccupiedField {
+ public:
+  explicit NearOccupiedField(const EvidenceOctree& map);
+  [[nodiscard]] bool near(const Eigen::Vector3d& p) const;
+
+ private:
+  double resolution_ = 1.0;
+  long x0_ = 0, y0_ = 0, z0_ = 0, nx_ = 0, ny_ = 0, nz_ = 0;
+  std::vector<std::uint8_t> bits_;
+};
+
+/// What matching needs of a closed submap, built once per candidate.
+struct OctreeMatchTarget {
+  NearOccupiedField field;
+  IcpTarget3 icp;  ///< occupied voxel centres, binned
+};
+OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& options);
+
+struct WindowMatch3 {
+  bool ok = false;
+  Pose4 pose;                ///< the robot at the window's start, in the candidate's frame
+  double icp_error = 0.0;    ///< [m]
+  double translation = 0.0;  ///< tau_m: distance from the guess [m]
+  double weight = 0.0;       ///< eq. 18
+};
+
+/// Sec. 4.5: a coarse search (x, y, yaw around `guess`, share of points near occupied voxels)
+/// seeds point-to-plane ICP of the binned window onto the candidate; weighted by eq. 18.
+WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& guess,
+                          const MatchingOptions& options);
+
+/// Submaps of a map sample summed into one set of voxels (independence: overlapping evidence
+/// adds, clamped to the map's bounds); a match child pasted after its parent adds only what
+/// it changed, so copied evidence is not counted twice.
+class OctreeCanvas {
+ public:
+  explicit OctreeCanvas(const OctreeOptions& options) : options_(options), grid_(options.resolution) {}
+  void paste(const EvidenceOctree& map, const Pose4& frame, const EvidenceOctree* pasted_parent = nullptr);
+  [[nodiscard]] EvidenceOctree to_octree() const;
+  /// Eq. 22 with gamma = the voxel volume [nats m^3], over every observed voxel.
+  [[nodiscard]] double entropy() const;
+  [[nodiscard]] std::size_t voxels() const { return cells_.size(); }
+
+ private:
+  OctreeOptions options_;
+  OctreeGrid grid_;
+  std::unordered_map<std::uint64_t, double> cells_;  // packed key -> summed log-odds [nats]
+};
+
+}  // namespace lookahead::slam::segslam

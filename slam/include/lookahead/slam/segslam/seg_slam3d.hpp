@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: MIT
+// SegSLAM on 3D range sweeps with copy-on-write evidence octrees: Fairfield, Kantor,
+// Wettergreen, "Segmented SLAM in three-dimensional environments", J. Field Robotics 27(1),
+// 2010, sec. 4-5. Each particle is a level pose (x, y, z, yaw; roll and pitch are the IMU's)
+// plus its open octree submap; prediction samples the pose with the 3D RBPF's proposal
+// (rbpf3d/motion3_model.hpp) and the submap among {same, new, match} (eq. 3, eq. 18);
+// weighting and map update are the 3D RBPF's (octree_likelihood, ray_insertion). The
+// SegMap, map samples, segmentation criterion, submap choice and trajectory reconstruction
+// are the generic code of the 2D filter (seg_map.hpp, map_sampler.hpp, segmentation.hpp,
+// submap_choice.hpp, trajectory_reconstruction.hpp) instantiated for EvidenceOctree + Pose4;
+// the octree operations are in octree_submap_ops.hpp.
+//
+// Deviation: the filter loop is a sibling of the 2D SegSlam class, not one template with it:
+// that class is written against laser scans and the 2D particle step and is being extended
+// (locking, merging) elsewhere; the graph code and the eq. 3/13-14/18 functions are shared.
+// Submap frames are level (x, y, z, yaw), and proximity winnowing also bounds the height
+// difference (the garage's decks share x, y).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <random>
+#include <tuple>
+#include <vector>
+
+#include "lookahead/slam/geometry/pose4.hpp"
+#include "lookahead/slam/rbpf3d/rbpf3d_options.hpp"
+#include "lookahead/slam/segslam/octree_submap_ops.hpp"
+#include "lookahead/slam/segslam/seg_map.hpp"
+#include "lookahead/slam/segslam/segment_picture.hpp"
+#include "lookahead/slam/segslam/segslam_options.hpp"
+#include "lookahead/slam/sensor/range_sweep.hpp"
+
+namespace lookahead::slam::segslam {
+
+using OctreeSubmap = Submap<EvidenceOctree, Pose4>;
+using OctreeSegMap = SegMap<EvidenceOctree, Pose4>;
+
+/// What only the 3D filter needs besides the RBPF's and SegSLAM's options.
+struct SegSlam3dExtras {
+  /// A fresh submap weighs its sweeps by the other particles' mean factor for this many
+  /// updates (it has only one sweep to compare against). >= 0.
+  int warmup_updates = 1;
+  /// Proximity winnowing also needs the robot within this height of the candidate's path
+  /// [m] (the garage's decks are 3 m apart). > 0.
+  double proximity_height = 1.0;
+  /// End points of the look-ahead window scored by eq. 17 and the coarse search. >= 10.
+  int window_points = 300;
+};
+
+/// The SegSLAM options for 3D sweeps: the 2D defaults with the bins, ICP and eq. 18 scales
+/// of 0.2 m voxels, and the look-ahead and periods of one sweep per second. Mirrored in
+/// config/segslam/garage3d.yaml (a test checks).
+SegSlamOptions segslam3d_defaults();
+
+struct SegSlam3dOptions {
+  Rbpf3dOptions filter;
+  SegSlamOptions segslam = segslam3d_defaults();
+  SegSlam3dExtras extras;
+};
+
+struct SegParticle3 {
+  Pose4 pose;           ///< x_t in its submap's frame
+  OctreeSubmap submap;  ///< the open submap it maps into
+  double log_weight = 0.0;
+  int submap_updates = 0;       ///< filter updates in the open submap
+  double motion_error = 0.0;    ///< eq. 13-14, accumulated in the open submap [m]
+  int updates_since_match = 0;  ///< since the last matching attempt
+};
+
+struct MatchEvent3 {
+  std::size_t sweep = 0;
+  std::size_t candidate = 0;
+  double weight = 0.0;
+};
+
+struct SegSlam3dStatistics {
+  std::size_t sweeps = 0, updates = 0, resamplings = 0;
+  std::size_t segmentations = 0, matches = 0, match_attempts = 0, pruned = 0;
+  std::vector<double> neff;
+  std::vector<MatchEvent3> match_events;
+  double matching_seconds = 0;  ///< summed over threads: building targets, coarse search, ICP
+};
+
+class SegSlam3d {
+ public:
+  explicit SegSlam3d(const SegSlam3dOptions& options);
+
+  /// Feeds one sweep (in time order); updates run once its look-ahead window is full.
+  void add_sweep(const RangeSweep& sweep);
+  /// Runs the updates still waiting for their window (the end of a log).
+  void finish();
+
+  [[nodiscard]] const std::vector<SegParticle3>& particles() const { return particles_; }
+  [[nodiscard]] const OctreeSegMap& segmap() const { return segmap_; }
+  [[nodiscard]] const SegSlam3dOptions& options() const { return options_; }
+  [[nodiscard]] const SegSlam3dStatistics& statistics() const { return stats_; }
+  [[nodiscard]] std::size_t best_particle() const;
+  /// Particle m's pose at its last update in the first submap's frame (the odometry frame
+  /// of the first sweep), by eq. 11 with matches closing loops.
+  [[nodiscard]] Pose4 global_pose(std::size_t m) const;
+  /// The weighted mean of the particles' global poses, brought to the newest sweep by dead
+  /// reckoning (sec. 4.1; sec. 5.2's loop-closure estimate).
+  [[nodiscard]] Pose4 estimate() const;
+  /// Particle m's reconstructed trajectory (eq. 11): (sweep, pose) per update.
+  [[nodiscard]] std::vector<std::pair<std::size_t, Pose4>> trajectory(std::size_t m) const;
+  /// The same at every sweep fed so far (the look-ahead tail by dead reckoning).
+  [[nodiscard]] std::vector<Pose4> trajectory_at_every_sweep(std::size_t m) const;
+  /// Top view, split by submap, with the re-entries (for pictures).
+  [[nodiscard]] SegmentedPath segmented_trajectory(std::size_t m) const;
+
+ private:
+  struct Transition;
+  struct SweepModel;  // one update's motion and measurement, shared by the particles
+  void initialize(const RangeSweep& first);
+  void update(std::size_t k);
+  void run_pending(double lookahead_s);
+  SweepWindow window_after(std::size_t sweep) const;
+  Transition predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng);
+  void advance(SegParticle3& p, const SweepModel& model, std::mt19937_64& rng) const;
+  std::vector<WindowMatch3> match_candidates(const SegParticle3& p, const SweepWindow& w,
+                                             std::vector<std::size_t>& ids, std::mt19937_64& rng);
+  WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
+  void store_transitions(std::vector<Transition>& transitions);
+  void prune();
+  [[nodiscard]] int thread_count() const;
+
+  SegSlam3dOptions options_;
+  std::vector<SegParticle3> particles_;
+  OctreeSegMap segmap_;
+  std::vector<RangeSweep> sweeps_;
+  std::size_t next_pending_ = 0;
+  std::size_t last_update_ = 0;
+  std::mt19937_64 rng_;
+  SegSlam3dStatistics stats_;
+  std::mutex cache_mutex_;
+  std::map<std::size_t, std::shared_ptr<const OctreeMatchTarget>> targets_;
+  std::map<std::tuple<std::size_t, long, long, long, long>, WindowMatch3> match_cache_;
+};
+
+}  // namespace lookahead::slam::segslam

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/segslam/octree_submap_ops.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "lookahead/slam/segslam/submap_choice.hpp"
+
+namespace lookahead::slam::segslam {
+namespace {
+
+Eigen::Vector3d apply(const Pose4& t, const Eigen::Vector3d& p) {
+  const double c = std::cos(t.yaw), s = std::sin(t.yaw);
+  return {t.x + c * p.x() - s * p.y(), t.y + s * p.x() + c * p.y(), t.z + p.z()};
+}
+
+std::uint64_t pack(const OctreeKey& k) {
+  return (static_cast<std::uint64_t>(k.x) << 32) | (static_cast<std::uint64_t>(k.y) << 16) | k.z;
+}
+OctreeKey unpack(std::uint64_t v) {
+  return {static_cast<std::uint16_t>(v >> 32), static_cast<std::uint16_t>(v >> 16), static_cast<std::uint16_t>(v)};
+}
+
+// An occupied voxel among the 27 around `p`?
+bool explained(OctreeReader& reader, const OctreeGrid& grid, float occupied_above, const Eigen::Vector3d& p) {
+  const long kx = grid.axis_key(p.x()), ky = grid.axis_key(p.y()), kz = grid.axis_key(p.z());
+  for (long dz = -1; dz <= 1; ++dz) {
+    for (long dy = -1; dy <= 1; ++dy) {
+      for (long dx = -1; dx <= 1; ++dx) {
+        const auto l = reader.log_odds(static_cast<int>(kx + dx), static_cast<int>(ky + dy), static_cast<int>(kz + dz));
+        if (l && *l > occupied_above) return true;
+      }
+    }
+  }
+  return false;
+}
+
+double near_share(const NearOccupiedField& field, const Pose4& pose, const Points3& points) {
+  int near = 0;
+  for (const auto& p : points) near += field.near(apply(pose, p)) ? 1 : 0;
+  return points.empty() ? 0.0 : static_cast<double>(near) / static_cast<double>(points.size());
+}
+
+// The best level pose on a grid around `guess` by the share of points near occupied voxels;
+// z stays the guess's (ICP corrects it on the floors).
+Pose4 coarse_search(const NearOccupiedField& field, const Points3& points, const Pose4& guess,
+                    const MatchingOptions& o, double step) {
+  const int n = static_cast<int>(o.search_radius / step);
+  const double angle_step = 0.05;
+  const int na = static_cast<int>(o.search_angle / angle_step);
+  Pose4 best = guess;
+  double best_score = near_share(field, guess, points);
+  for (int a = -na; a <= na; ++a) {
+    for (int i = -n; i <= n; ++i) {
+      for (int j = -n; j <= n; ++j) {
+        const Pose4 p{guess.x + i * step, guess.y + j * step, guess.z, normalize_angle(guess.yaw + a * angle_step)};
+        const double v = near_share(field, p, points);
+        if (v > best_score) best_score = v, best = p;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+double predictive_score(const EvidenceOctree& map, const Pose4& pose, const SweepWindow& w) {
+  if (w.scored.empty()) return -1.0;
+  OctreeReader reader(map);
+  const auto above = static_cast<float>(map.options().occupied_above);
+  int hits = 0;
+  for (const auto& p : w.scored) hits += explained(reader, map.grid(), above, apply(pose, p)) ? 1 : 0;
+  return static_cast<double>(hits) / static_cast<double>(w.scored.size());
+}
+
+bool has_observed_near(const EvidenceOctree& map, const Eigen::Vector3d& p, double radius) {
+  OctreeReader reader(map);
+  const OctreeGrid& g = map.grid();
+  const double step = std::max(g.resolution(), radius / 4);
+  for (double dx = -radius; dx <= radius; dx += step) {
+    for (double dy = -radius; dy <= radius; dy += step) {
+      for (double dz = -step; dz <= step; dz += step) {
+        const Eigen::Vector3d q = p + Eigen::Vector3d(dx, dy, dz);
+        if (reader.log_odds(static_cast<int>(g.axis_key(q.x())), static_cast<int>(g.axis_key(q.y())),
+                            static_cast<int>(g.axis_key(q.z())))) {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+NearOccupiedField::NearOccupiedField(const EvidenceOctree& map) : resolution_(map.grid().resolution()) {
+  const auto above = static_cast<float>(map.options().occupied_above);
+  std::vector<OctreeKey> occupied;
+  map.for_each_voxel([&](const OctreeKey& k, float l) { if (l > above) occupied.push_back(k); });
+  if (occupied.empty()) return;
+  long x1 = 0, y1 = 0, z1 = 0;
+  x0_ = y0_ = z0_ = std::numeric_limits<long>::max();
+  for (const auto& k : occupied) {
+    x0_ = std::min<long>(x0_, k.x), y0_ = std::min<long>(y0_, k.y), z0_ = std::min<long>(z0_, k.z);
+    x1 = std::max<long>(x1, k.x), y1 = std::max<long>(y1, k.y), z1 = std::max<long>(z1, k.z);
+  }
+  x0_ -= 1, y0_ -= 1, z0_ -= 1;
+  nx_ = x1 - x0_ + 2, ny_ = y1 - y0_ + 2, nz_ = z1 - z0_ + 2;
+  bits_.assign(static_cast<std::size_t>(nx_ * ny_ * nz_), 0);
+  for (const auto& k : occupied) {
+    for (long dz = 0; dz <= 2; ++dz) {
+      for (long dy = 0; dy <= 2; ++dy) {
+        for (long dx = 0; dx <= 2; ++dx) {
+          const long x = k.x - x0_ - 1 + dx, y = k.y - y0_ - 1 + dy, z = k.z - z0_ - 1 + dz;
+          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] = 1;
+        }
+      }
+    }
+  }
+}
+
+bool NearOccupiedField::near(const Eigen::Vector3d& p) const {
+  const OctreeGrid g(resolution_);
+  const long x = g.axis_key(p.x()) - x0_, y = g.axis_key(p.y()) - y0_, z = g.axis_key(p.z()) - z0_;
+  if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return false;
+  return bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] != 0;
+}
+
+OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& o) {
+  Points3 occupied;
+  const auto above = static_cast<float>(map.options().occupied_above);
+  map.for_each_voxel([&](const OctreeKey& k, float l) {
+    if (l > above) occupied.push_back(map.grid().centre_of(k));
+  });
+  return {NearOccupiedField(map), IcpTarget3(bin_points3(occupied, o.bin_size), o.icp_max_distance)};
+}
+
+WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w, const Pose4& guess,
+                          const MatchingOptions& o) {
+  WindowMatch3 m;
+  if (target.icp.size() < 10 || w.cloud.size() < 10) return m;
+  // The near field reaches one voxel around a surface: steps of 1.5 voxels miss no peak.
+  const Pose4 seed = coarse_search(target.field, w.scored, guess, o, 1.5 * o.bin_size);
+  const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance});
+  m.pose = icp.transform;
+  m.icp_error = icp.mean_error;
+  m.translation = (m.pose.position() - guess.position()).norm();
+  m.ok = icp.inlier_ratio >= o.min_inlier_ratio;
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
+  return m;
+}
+
+void OctreeCanvas::paste(const EvidenceOctree& map, const Pose4& frame, const EvidenceOctree* parent) {
+  std::unordered_map<std::uint64_t, std::pair<double, int>> mine;
+  std::optional<OctreeReader> parent_reader;
+  if (parent) parent_reader.emplace(*parent);
+  map.for_each_voxel([&](const OctreeKey& k, float l) {
+    double delta = l;
+    if (parent_reader) delta -= parent_reader->log_odds(k.x, k.y, k.z).value_or(0.0f);
+    if (parent_reader && delta == 0.0) return;  // the parent's evidence, already pasted
+    const auto key = grid_.key_of(apply(frame, map.grid().centre_of(k)));
+    if (!key) return;
+    auto& [sum, n] = mine[pack(*key)];
+    sum += delta;
+    ++n;
+  });
+  // Rotated voxels alias: the average of a submap's voxels landing in one target voxel.
+  for (const auto& [k, sn] : mine) cells_[k] += sn.first / sn.second;
+}
+
+EvidenceOctree OctreeCanvas::to_octree() const {
+  EvidenceOctree out(options_);
+  OctreeWriter writer(out);
+  for (const auto& [k, l] : cells_) {
+    writer.set_log_odds(unpack(k), static_cast<float>(std::clamp(l, options_.log_odds_min, options_.log_odds_max)));
+  }
+  return out;
+}
+
+double OctreeCanvas::entropy() const {
+  double h = 0;
+  for (const auto& [k, l] : cells_) {
+    const double p = 1.0 / (1.0 + std::exp(-std::clamp(l, options_.log_odds_min, options_.log_odds_max)));
+    h -= p * std::log(p) + (1 - p) * std::log(1 - p);
+  }
+  return h * std::pow(options_.resolution, 3);
+}
+
+}  // namespace lookahead::slam::segslam

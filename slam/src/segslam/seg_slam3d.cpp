@@ -1,0 +1,408 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/slam/segslam/seg_slam3d.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "lookahead/slam/octree/octree_likelihood.hpp"
+#include "lookahead/slam/octree/ray_insertion.hpp"
+#include "lookahead/slam/rbpf/particle_step.hpp"
+#include "lookahead/slam/rbpf/resampler.hpp"
+#include "lookahead/slam/rbpf3d/motion3_model.hpp"
+#include "lookahead/slam/segslam/map_sampler.hpp"
+#include "lookahead/slam/segslam/segmentation.hpp"
+#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
+
+namespace lookahead::slam::segslam {
+
+SegSlamOptions segslam3d_defaults() {
+  SegSlamOptions o;
+  // One sweep per second: 3 s of look-ahead is three sweeps, a segment at least 10 m.
+  o.segmentation.lookahead_s = 3.0;
+  o.segmentation.min_segment_updates = 10;
+  // Bins of one voxel (0.2 m); ICP errors and their eq. 18 scale grow with the voxel.
+  o.matching.bin_size = 0.2;
+  o.matching.icp_iterations = 20;
+  o.matching.icp_max_distance = 0.5;
+  o.matching.icp_sigma = 0.08;
+  o.matching.null_error = 0.12;
+  o.matching.proximity_radius = 4.0;
+  o.offline.map_samples = 5;
+  return o;
+}
+
+struct SegSlam3d::Transition {
+  bool closed_one = false;
+  OctreeSubmap closed;
+  std::size_t candidate = kNoSubmap;
+  double weight = 0.0;
+};
+
+/// Dead reckoning from the last update's sweep to this one, and this sweep's beams.
+struct SegSlam3d::SweepModel {
+  Pose3 increment;
+  Euler imu_before, imu;
+  double yaw_change = 0.0;
+  std::vector<Eigen::Vector3d> ends;  ///< scored end points, robot frame
+  std::vector<Ray3> rays;             ///< inserted beams, robot frame
+  std::size_t sweep = 0;
+  double motion_error = 0.0;          ///< eq. 13-14 increment [m]
+};
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The sweep's beams (every n-th) in the submap frame with the robot at `pose`.
+std::vector<Ray3> rays_at(const Pose3& pose, const std::vector<Ray3>& local) {
+  std::vector<Ray3> out(local.size());
+  for (std::size_t k = 0; k < local.size(); ++k) out[k] = {pose * local[k].origin, pose * local[k].end, local[k].hit};
+  return out;
+}
+
+// Distance in the plane from p to the nearest pose of a submap's path, if one is within
+// `height` of p's height [m].
+double distance_to_path(const OctreeSubmap& s, const Pose4& p, double height) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& [sweep, q] : s.path) {
+    if (std::abs(q.z - p.z) <= height) best = std::min(best, std::hypot(q.x - p.x, q.y - p.y));
+  }
+  return best;
+}
+
+}  // namespace
+
+SegSlam3d::SegSlam3d(const SegSlam3dOptions& options)
+    : options_(options), rng_(mix_seed(options.filter.seed, 0x5E653Dull, 0)) {
+  options_.filter.validate();
+  validate(options_.segslam);
+  const SegSlam3dExtras& e = options_.extras;
+  if (e.warmup_updates < 0 || !(e.proximity_height > 0) || e.window_points < 10) {
+    throw std::invalid_argument("segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10");
+  }
+}
+
+int SegSlam3d::thread_count() const {
+  return options_.filter.threads > 0 ? options_.filter.threads : omp_get_num_procs();
+}
+
+void SegSlam3d::add_sweep(const RangeSweep& sweep) {
+  sweeps_.push_back(sweep);
+  ++stats_.sweeps;
+  if (particles_.empty()) initialize(sweep);
+  run_pending(options_.segslam.segmentation.lookahead_s);
+}
+
+void SegSlam3d::finish() { run_pending(0.0); }
+
+void SegSlam3d::run_pending(double lookahead_s) {
+  // Sec. 4.1: the filter runs a look-ahead window behind the newest sweep.
+  while (next_pending_ < sweeps_.size() && sweeps_.back().time - sweeps_[next_pending_].time >= lookahead_s) {
+    update(next_pending_++);
+  }
+}
+
+void SegSlam3d::initialize(const RangeSweep& first) {
+  SegParticle3 p;
+  p.pose = Pose4::level_of(first.odometry);  // the first submap's frame is the odometry frame
+  p.submap.interval = {0, 0, first.time, first.time};
+  p.submap.entry = p.submap.exit = p.pose;
+  p.submap.map = EvidenceOctree(options_.filter.map);
+  insert_rays(p.submap.map, rays_at(first.odometry, first.rays), options_.filter.insert);
+  p.submap.path.push_back({0, p.pose});
+  particles_.assign(static_cast<std::size_t>(options_.filter.particles), p);
+  next_pending_ = 1;
+  stats_.updates = 1;
+  stats_.neff.push_back(static_cast<double>(options_.filter.particles));
+}
+
+SweepWindow SegSlam3d::window_after(std::size_t sweep) const {
+  const Pose3 start_inverse = Pose4::level_of(sweeps_[sweep].odometry).level_pose3().inverse();
+  Points3 all;
+  for (std::size_t j = sweep; j < sweeps_.size() &&
+                              sweeps_[j].time - sweeps_[sweep].time <= options_.segslam.segmentation.lookahead_s;
+       ++j) {
+    const Pose3 to_start = start_inverse * sweeps_[j].odometry;
+    for (const Ray3& r : sweeps_[j].rays) {
+      if (r.hit && (r.end - r.origin).norm() <= options_.filter.insert.max_range) all.push_back(to_start * r.end);
+    }
+  }
+  SweepWindow w;
+  const std::size_t every = std::max<std::size_t>(1, all.size() / static_cast<std::size_t>(options_.extras.window_points));
+  for (std::size_t i = 0; i < all.size(); i += every) w.scored.push_back(all[i]);
+  w.cloud = bin_points3(all, options_.segslam.matching.bin_size);
+  return w;
+}
+
+std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, const SweepWindow& w,
+                                                      std::vector<std::size_t>& ids, std::mt19937_64& rng) {
+  const MatchingOptions& o = options_.segslam.matching;
+  const double now = sweeps_[last_update_].time;
+  const auto sample = sample_local_map(segmap_, p.submap, kNoSubmap, o.sample_submaps, rng);
+  const OctreeSubmap* own_root = frame_root(segmap_, p.submap);
+  struct Candidate {
+    double distance;
+    std::size_t id;
+    Pose4 guess;
+  };
+  std::vector<Candidate> candidates;
+  for (std::size_t i = 1; i < sample.size(); ++i) {
+    const OctreeSubmap& c = segmap_.at(sample[i].id);
+    // Sec. 4.5.1 winnowing as in 2D: temporal separation, not the particle's own frame,
+    // and (Deviation, as in 2D) near the candidate's own path, here also in height.
+    if (c.interval.t_end > now - o.min_separation_s) continue;
+    if (frame_root(segmap_, c)->interval == own_root->interval) continue;
+    const Pose4 guess = sample[i].frame.inverse().compose(p.pose);
+    const double d = distance_to_path(c, guess, options_.extras.proximity_height);
+    if (d > o.proximity_radius || !has_observed_near(c.map, guess.position(), o.proximity_radius)) continue;
+    candidates.push_back({d, sample[i].id, guess});
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+  if (candidates.size() > static_cast<std::size_t>(o.max_candidates)) candidates.resize(static_cast<std::size_t>(o.max_candidates));
+  std::vector<WindowMatch3> out;
+  for (const Candidate& c : candidates) {
+    const WindowMatch3 m = cached_match(c.id, c.guess, w);
+    if (!m.ok) continue;
+    ids.push_back(c.id);
+    out.push_back(m);
+  }
+  return out;
+}
+
+WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w) {
+  const auto key = std::make_tuple(candidate, std::lround(guess.x / 0.5), std::lround(guess.y / 0.5),
+                                   std::lround(guess.z / 0.5), std::lround(guess.yaw / 0.1));
+  WindowMatch3 m;
+  bool found = false;
+  std::shared_ptr<const OctreeMatchTarget> target;
+  {
+    const std::lock_guard<std::mutex> lock(cache_mutex_);
+    const auto it = match_cache_.find(key);
+    if (it != match_cache_.end()) m = it->second, found = true;
+    target = targets_[candidate];
+  }
+  if (!found) {
+    const auto start = std::chrono::steady_clock::now();
+    // Searched from the rounded guess: the result does not depend on which particle asked.
+    const Pose4 rounded{std::get<1>(key) * 0.5, std::get<2>(key) * 0.5, std::get<3>(key) * 0.5,
+                        normalize_angle(std::get<4>(key) * 0.1)};
+    if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
+    m = match_window(*target, w, rounded, options_.segslam.matching);
+    const std::lock_guard<std::mutex> lock(cache_mutex_);
+    targets_[candidate] = target;
+    match_cache_.emplace(key, m);
+    ++stats_.match_attempts;
+    stats_.matching_seconds += seconds_since(start);
+  }
+  m.translation = (m.pose.position() - guess.position()).norm();
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, options_.segslam.matching) : 0.0;
+  return m;
+}
+
+SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng) {
+  Transition t;
+  const SegmentationOptions& so = options_.segslam.segmentation;
+  const MatchingOptions& mo = options_.segslam.matching;
+  // Eq. 17 only where it can decide (a large enough submap, motion error below its bound).
+  const bool score_it = p.submap_updates >= so.min_segment_updates && p.motion_error < so.max_motion_error &&
+                        so.predictive_threshold > 0;
+  const double score = score_it ? predictive_score(p.submap.map, p.pose, w) : -1.0;
+  const bool segment = should_segment(p.submap_updates, p.motion_error, score, so);
+  std::vector<std::size_t> ids;
+  std::vector<WindowMatch3> matches;
+  const bool periodic = p.updates_since_match >= mo.period_updates && p.submap_updates >= mo.period_updates;
+  if (segment || periodic) {
+    matches = match_candidates(p, w, ids, rng);
+    p.updates_since_match = 0;
+  }
+  std::vector<double> weights;
+  for (const WindowMatch3& m : matches) weights.push_back(m.weight);
+  const ChoiceDraw draw = draw_submap_choice(segment, weights, mo, rng);  // eq. 3
+  if (draw.choice == SubmapChoice::kSame) return t;
+  const RangeSweep& at = sweeps_[last_update_];
+  OctreeSubmap next;
+  next.interval = {last_update_, last_update_, at.time, at.time};
+  if (draw.choice == SubmapChoice::kNew) {
+    next.map = EvidenceOctree(options_.filter.map);  // a fresh level frame at the robot
+    const Euler e = euler_of(at.odometry.linear());
+    insert_rays(next.map, rays_at(Pose4{}.with_tilt(e.roll, e.pitch), at.rays), options_.filter.insert);
+  } else {
+    t.candidate = ids[draw.match];
+    t.weight = matches[draw.match].weight;
+    next.entry = matches[draw.match].pose;
+    next.parent = t.candidate;
+    next.map = segmap_.at(t.candidate).map;  // copy-on-write: shares every brick until written
+  }
+  next.exit = next.entry;
+  next.path.push_back({last_update_, next.entry});
+  t.closed_one = true;
+  t.closed = std::move(p.submap);
+  p.submap = std::move(next);
+  p.pose = p.submap.entry;
+  p.submap_updates = 0;
+  p.motion_error = 0.0;
+  return t;
+}
+
+void SegSlam3d::advance(SegParticle3& p, const SweepModel& s, std::mt19937_64& rng) const {
+  // The 3D RBPF's particle step: motion-model proposal, end-point likelihood, ray insertion.
+  const Pose3 before = p.pose.with_tilt(s.imu_before.roll, s.imu_before.pitch);
+  const Pose3 after = sample_motion3(before, s.increment, s.imu, s.yaw_change, options_.filter.motion, rng);
+  p.pose = Pose4::level_of(after);
+  std::vector<Eigen::Vector3d> world(s.ends.size());
+  for (std::size_t k = 0; k < s.ends.size(); ++k) world[k] = after * s.ends[k];
+  p.log_weight += options_.filter.weight_exponent * octree_log_likelihood(p.submap.map, world, options_.filter.likelihood);
+  insert_rays(p.submap.map, rays_at(after, s.rays), options_.filter.insert);
+  p.submap.path.push_back({s.sweep, p.pose});
+  p.submap.interval.last_scan = s.sweep;
+  p.submap.interval.t_end = sweeps_[s.sweep].time;
+  p.submap.exit = p.pose;
+  ++p.submap_updates;
+  ++p.updates_since_match;
+  p.motion_error += s.motion_error;
+}
+
+void SegSlam3d::update(std::size_t k) {
+  const RangeSweep& prev = sweeps_[last_update_];
+  const RangeSweep& now = sweeps_[k];
+  SweepModel s;
+  s.sweep = k;
+  s.increment = prev.odometry.inverse() * now.odometry;
+  s.imu_before = euler_of(prev.odometry.linear());
+  s.imu = euler_of(now.odometry.linear());
+  s.yaw_change = normalize_angle(s.imu.yaw - s.imu_before.yaw);
+  s.motion_error = motion_error_increment(Pose4::level_of(prev.odometry).between(Pose4::level_of(now.odometry)).planar(),
+                                          options_.segslam.segmentation);
+  const auto step = static_cast<std::size_t>(options_.filter.likelihood_ray_step);
+  for (std::size_t i = 0, hits = 0; i < now.rays.size(); ++i) {
+    if (now.rays[i].hit && hits++ % step == 0) s.ends.push_back(now.rays[i].end);
+  }
+  for (std::size_t i = 0; i < now.rays.size(); i += static_cast<std::size_t>(options_.filter.insert_ray_step)) {
+    s.rays.push_back(now.rays[i]);
+  }
+  const SweepWindow w = window_after(last_update_);
+  match_cache_.clear();
+  const int n = static_cast<int>(particles_.size());
+  std::vector<Transition> transitions(particles_.size());
+  std::vector<double> gain(particles_.size(), 0.0);
+  std::vector<char> warm(particles_.size(), 0);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
+  for (int i = 0; i < n; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    SegParticle3& p = particles_[u];
+    std::mt19937_64 rng(mix_seed(options_.filter.seed, stats_.updates, static_cast<std::uint64_t>(i)));
+    transitions[u] = predict_submap(p, w, rng);
+    warm[u] = p.submap_updates >= options_.extras.warmup_updates || p.submap.parent != kNoSubmap;
+    const double before = p.log_weight;
+    advance(p, s, rng);
+    gain[u] = p.log_weight - before;
+  }
+  // Deviation (as in 2D): a fresh submap has little to weigh its first sweeps against; it
+  // gets the mean factor of the other particles, so starting a submap is neither rewarded
+  // nor punished.
+  double sum = 0;
+  int warm_count = 0;
+  for (std::size_t i = 0; i < gain.size(); ++i) if (warm[i]) sum += gain[i], ++warm_count;
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    if (!warm[i] && warm_count > 0) particles_[i].log_weight += sum / warm_count - gain[i];
+  }
+  store_transitions(transitions);
+  last_update_ = k;
+  ++stats_.updates;
+  bool resampled = false;
+  stats_.neff.push_back(resample_if_degenerate(particles_, options_.filter.resample_threshold, rng_, resampled));
+  if (resampled) ++stats_.resamplings;
+  if (stats_.updates % 10 == 0) prune();
+}
+
+void SegSlam3d::store_transitions(std::vector<Transition>& transitions) {
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    Transition& t = transitions[i];
+    if (!t.closed_one) continue;
+    particles_[i].submap.predecessor = segmap_.add(std::move(t.closed));
+    if (t.candidate == kNoSubmap) {
+      ++stats_.segmentations;
+    } else {
+      ++stats_.matches;
+      stats_.match_events.push_back({last_update_, t.candidate, t.weight});
+    }
+  }
+}
+
+void SegSlam3d::prune() {
+  std::vector<std::size_t> roots;
+  for (const SegParticle3& p : particles_) roots.push_back(p.submap.predecessor), roots.push_back(p.submap.parent);
+  stats_.pruned += segmap_.prune(roots);
+  for (auto it = targets_.begin(); it != targets_.end();) it = segmap_.contains(it->first) ? std::next(it) : targets_.erase(it);
+}
+
+std::size_t SegSlam3d::best_particle() const {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < particles_.size(); ++i) {
+    if (particles_[i].log_weight > particles_[best].log_weight) best = i;
+  }
+  return best;
+}
+
+std::vector<std::pair<std::size_t, Pose4>> SegSlam3d::trajectory(std::size_t m) const {
+  const auto chain = temporal_chain(segmap_, particles_.at(m).submap);
+  return reconstruct_trajectory(chain, chain_frames_with_matches(segmap_, chain));
+}
+
+std::vector<Pose4> SegSlam3d::trajectory_at_every_sweep(std::size_t m) const {
+  const auto updates = trajectory(m);
+  std::vector<Pose4> out(sweeps_.size());
+  std::size_t k = 0;
+  for (std::size_t s = 0; s < sweeps_.size(); ++s) {
+    while (k + 1 < updates.size() && updates[k + 1].first <= s) ++k;
+    const auto& [sweep, pose] = updates[k];
+    out[s] = pose.compose(Pose4::level_of(sweeps_[sweep].odometry).between(Pose4::level_of(sweeps_[s].odometry)));
+  }
+  return out;
+}
+
+SegmentedPath SegSlam3d::segmented_trajectory(std::size_t m) const {
+  const auto chain = temporal_chain(segmap_, particles_.at(m).submap);
+  const auto frames = chain_frames_with_matches(segmap_, chain);
+  SegmentedPath out;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    std::vector<Pose2> piece;
+    for (const auto& [sweep, pose] : chain[i]->path) piece.push_back(frames[i].compose(pose).planar());
+    out.pieces.push_back(std::move(piece));
+    if (chain[i]->parent != kNoSubmap) {
+      const Pose4 at = frames[i].compose(chain[i]->entry);
+      out.matches.emplace_back(at.x, at.y);
+    }
+  }
+  return out;
+}
+
+Pose4 SegSlam3d::global_pose(std::size_t m) const {
+  const auto chain = temporal_chain(segmap_, particles_.at(m).submap);
+  return chain_frames_with_matches(segmap_, chain).back().compose(particles_[m].pose);
+}
+
+Pose4 SegSlam3d::estimate() const {
+  std::vector<double> logw;
+  for (const SegParticle3& p : particles_) logw.push_back(p.log_weight);
+  const std::vector<double> w = normalized_weights(logw);
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  double c = 0, s = 0;
+  for (std::size_t m = 0; m < particles_.size(); ++m) {
+    const Pose4 g = global_pose(m);
+    position += w[m] * g.position();
+    c += w[m] * std::cos(g.yaw), s += w[m] * std::sin(g.yaw);
+  }
+  const Pose4 mean{position.x(), position.y(), position.z(), std::atan2(s, c)};
+  return mean.compose(Pose4::level_of(sweeps_[last_update_].odometry).between(Pose4::level_of(sweeps_.back().odometry)));
+}
+
+}  // namespace lookahead::slam::segslam
