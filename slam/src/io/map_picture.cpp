@@ -39,7 +39,8 @@ void draw_legend(cv::Mat& img, const std::vector<PicturePath>& paths,
                  const std::vector<PicturePoints>& points, const std::string& title, bool start) {
   const int line_h = 18;
   const int rows = static_cast<int>(paths.size() + points.size()) + (start ? 2 : 1);
-  cv::rectangle(img, cv::Rect(4, 4, 330, line_h * rows + 6), cv::Scalar(255, 255, 255), cv::FILLED);
+  cv::rectangle(img, cv::Rect(0, 0, kLegendPanelWidth, std::max(img.rows, line_h * rows + 6)),
+                cv::Scalar(255, 255, 255), cv::FILLED);
   const auto text = [&](const std::string& t, int row) {
     cv::putText(img, t, {48, 4 + line_h * row}, cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
   };
@@ -90,7 +91,12 @@ BgrImage render_map_picture(const ProbabilityMap& map, const std::vector<Picture
     const Pose2& s0 = paths.front().poses.front();
     cv::circle(img, to_px(s0.x, s0.y), 6, cv::Scalar(40, 160, 40), cv::FILLED);
   }
-  draw_legend(img, paths, points, title, start);
+  // The legend gets a panel of its own left of the map: drawn over the map it hid the
+  // corner of every building that fills its picture.
+  cv::Mat framed(img.rows, img.cols + kLegendPanelWidth, img.type(), cv::Scalar(255, 255, 255));
+  img.copyTo(framed(cv::Rect(kLegendPanelWidth, 0, img.cols, img.rows)));
+  draw_legend(framed, paths, points, title, start);
+  img = framed;
   BgrImage out;
   out.width = img.cols;
   out.height = img.rows;

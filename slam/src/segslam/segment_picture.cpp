@@ -32,7 +32,7 @@ void write_segment_picture(const std::string& png_path, const ProbabilityMap& ma
   // The same pixel mapping as render_map_picture.
   const int scale = std::max(1, 800 / std::max(map.width, map.height));
   const auto to_px = [&](double x, double y) {
-    return cv::Point(static_cast<int>((x - map.origin_x) / map.resolution * scale),
+    return cv::Point(kLegendPanelWidth + static_cast<int>((x - map.origin_x) / map.resolution * scale),
                      static_cast<int>((map.height - (y - map.origin_y) / map.resolution) * scale));
   };
   for (std::size_t i = 0; i < path.pieces.size(); ++i) {
@@ -47,7 +47,7 @@ void write_segment_picture(const std::string& png_path, const ProbabilityMap& ma
   }
   // Legend rows under the base legend (title, odometry, start).
   const int y0 = 4 + 18 * 5;
-  cv::rectangle(img, cv::Rect(4, y0 - 14, 330, 40), cv::Scalar(255, 255, 255), cv::FILLED);
+  cv::rectangle(img, cv::Rect(0, y0 - 14, kLegendPanelWidth, 40), cv::Scalar(255, 255, 255), cv::FILLED);
   for (int k = 0; k < 3; ++k) cv::line(img, {10 + 10 * k, y0 - 5}, {20 + 10 * k, y0 - 5}, colour(static_cast<std::size_t>(k)), 3);
   cv::putText(img, "SegSLAM trajectory, one colour per submap", {48, y0}, cv::FONT_HERSHEY_SIMPLEX, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
   cv::putText(img, "X", {19, y0 + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.5, {0, 0, 0}, 2, cv::LINE_AA);

@@ -39,6 +39,10 @@ struct BgrImage {
   std::vector<std::uint8_t> pixels;
 };
 
+/// The legend's white panel left of the map [pixels]: a map's x pixel in the picture is
+/// kLegendPanelWidth + (x - origin_x) / resolution * scale.
+constexpr int kLegendPanelWidth = 380;
+
 /// Renders `map` with the paths and point sets drawn over it and a legend; the start of
 /// the first path gets a marker unless it says otherwise. `title` goes in the legend's first line. Small maps are
 /// scaled up so cells stay visible.
