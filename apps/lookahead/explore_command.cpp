@@ -16,6 +16,7 @@
 #include "lookahead/exploration/mission_report.hpp"
 #include "lookahead/exploration/world_source.hpp"
 #include "lookahead/planner/ompl_logging.hpp"
+#include "process_stats.hpp"
 #include "progress_bar.hpp"
 
 namespace lookahead::app {
@@ -88,7 +89,7 @@ int run_explore(ExploreArgs a) {
     }
   });
   bar.finish();
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall = seconds_since(start);
   if (video) video->close();
   const exploration::MissionSummary s = exploration::summarize(mission, a.world.name, wall);
   exploration::write_mission_outputs(mission, s, a.out);

@@ -45,10 +45,6 @@ struct Input {
   std::optional<slam::World3> world;  ///< simulated inputs only
 };
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
 Input read_input(const Slam3dArgs& a, const slam::Slam3dOptions& o) {
   Input in;
   if (a.input == "garage" || a.input == "geb079") {

@@ -21,10 +21,6 @@ namespace {
 
 using slam::segslam::SegSlam3d;
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
 /// Bytes of the particles' open maps and of every map the filter holds (open and stored
 /// submaps), each shared node counted once.
 nlohmann::json memory_json(const SegSlam3d& f) {

@@ -131,7 +131,7 @@ int run_slam(const SlamArgs& a) {
     bar.update(i + 1, neff.empty() ? "" : fmt::format("Neff {:.0f}", neff.back()));
   }
   bar.finish();
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall = seconds_since(start);
   write_outputs(a, log, filter, wall, lookahead.get());
   spdlog::info("done in {:.1f} s ({:.1f}x real time), peak {:.0f} MB; wrote {}/map.png", wall,
                (log.scans.back().timestamp - log.scans.front().timestamp) / wall,

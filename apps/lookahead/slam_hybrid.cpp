@@ -120,7 +120,7 @@ int run_slam_hybrid(const slam::LaserLog& log, const SlamHybridArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   const LogMappingResult r = map_log(log, options, [&](std::size_t done, std::size_t) { bar.update(done); });
   bar.finish();
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall = seconds_since(start);
 
   std::filesystem::create_directories(a.out);
   std::vector<slam::StampedPose> stamped, logger_time;

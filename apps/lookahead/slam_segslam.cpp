@@ -23,10 +23,6 @@ namespace {
 
 using slam::segslam::SegSlam;
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 slam::LaserLog read_log(const SegSlamArgs& a) {
   slam::LogReadOptions read;
   read.skip_bad_lines = a.skip_bad_lines;
