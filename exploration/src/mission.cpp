@@ -171,7 +171,9 @@ void Mission::refresh() {
     reached_goal_.reset();
   }
   costmap_ = planner::Costmap(m, options_.planner.costmap);
-  if (follower_ && !follower_->path_still_valid(costmap_)) {
+  // A backtrack follows the robot's own trail, which the margin may have closed: that is
+  // why it is taken. The reactive stop still guards it.
+  if (follower_ && !backtracking_ && !follower_->path_still_valid(costmap_)) {
     follower_.reset();  // new walls block the path: replan from here (to the same goal)
     path_blocked_ = true;
     ++stats_.replans;
@@ -180,6 +182,7 @@ void Mission::refresh() {
 
 bool Mission::goal_still_useful() const {
   if (!goal_) return false;
+  if (backtracking_) return true;  // the way out, not a frontier
   // The goal served its frontier while a frontier cell is still near it.
   const slam::OccupancyGrid& m = map();
   const slam::CellIndex g = m.cell_at(goal_->x, goal_->y);
@@ -205,7 +208,7 @@ bool Mission::need_new_path() {
   // the sensor cannot see from its goal, the inside of a wall): the frontier cells next to
   // it are retired, and the spot is not picked again for a while.
   if (follower_->goal_reached()) {
-    if (goal_) {
+    if (goal_ && !backtracking_) {
       blacklist_.add(goal_->x, goal_->y, time_);
       reached_goal_ = goal_;  // its frontier gets one more map update to clear
     }
@@ -259,6 +262,7 @@ bool Mission::replan_current_goal() {
 
 void Mission::select_new_target() {
   path_blocked_ = false;
+  backtracking_ = false;
   follower_.reset();
   goal_.reset();
   blacklist_.expire(time_);
@@ -275,6 +279,7 @@ void Mission::select_new_target() {
     // Maybe only for now: turn once more to look around, and give up after three tries.
     // Frontiers that are only blacklisted for a while are no trap: the robot looks around
     // until an entry expires (each spot is retried at most max_strikes times).
+    if (!s.waiting_on_blacklist && s.outcome == SelectionOutcome::kUnreachable && backtrack()) return;
     if (!s.waiting_on_blacklist && ++unreachable_streak_ >= 3) status_ = MissionStatus::kTrapped;
     turned_ = 0.0;
   } else {
@@ -288,6 +293,23 @@ void Mission::select_new_target() {
     last_progress_time_ = time_;
     next_goal_check_ = time_ + options_.goal_check_period;
   }
+}
+
+bool Mission::backtrack() {
+  if (!options_.backtrack) return false;
+  const Selection s = select_escape(selection_inputs(), crumbs_);
+  if (s.outcome != SelectionOutcome::kPlanned) return false;
+  ++stats_.backtracks;
+  spdlog::debug("t {:.1f}: no frontier reachable: backtrack {} crumbs to ({:.2f}, {:.2f})", time_, s.path.size() - 1,
+                s.goal_x, s.goal_y);
+  backtracking_ = true;
+  goal_ = planner::Point2{s.goal_x, s.goal_y};
+  follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
+  const slam::Pose2 p = estimate();
+  best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);
+  last_progress_time_ = time_;
+  next_goal_check_ = time_ + options_.goal_check_period;
+  return true;
 }
 
 void Mission::act() {
@@ -309,6 +331,8 @@ void Mission::act() {
   const slam::Pose2 before = robot_.pose();
   const StepResult r = robot_.step(cmd.v, cmd.omega, options_.laser.period());
   odometry_.update(before.between(r.pose));
+  // Retraced crumbs were popped; dropping them again would lead the next backtrack back in.
+  if (!backtracking_) crumbs_.drop({estimate().x, estimate().y});
   path_length_ += r.distance;
   turned_ += std::abs(r.turned);
   if (r.collided) {
@@ -321,7 +345,8 @@ void Mission::hold_or_replan() {
   // A stop that outlasts a costmap refresh is not a wall the map had not caught up with:
   // the robot is off its path, facing a door jamb it cut towards. Waiting for the stuck
   // clock (30 s) wastes the time; a new plan starts from the nearest free cell, away from it.
-  if (++stop_streak_ < kStopsBeforeReplan) return;
+  // A backtrack has no other way to go: it waits, and the stuck clock gives it up.
+  if (++stop_streak_ < kStopsBeforeReplan || backtracking_) return;
   stop_streak_ = 0;
   follower_.reset();
   path_blocked_ = true;

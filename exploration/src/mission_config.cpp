@@ -35,6 +35,7 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v("free_threshold", o.free_threshold, "a map cell below this occupancy is explored, (0, 0.5)");
   v("safety_margin", o.safety_margin, "planning clearance beyond the robot radius [m]");
   v("stop_distance", o.stop_distance, "reactive stop for laser points this close ahead [m]");
+  v("backtrack", o.backtrack, "no frontier reachable: retrace the robot's trail out of its place");
   v.section("robot");
   v("radius", o.robot.radius, "disc radius [m], > 0");
   v("max_speed", o.robot.max_speed, "[m/s], > 0");

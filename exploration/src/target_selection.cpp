@@ -181,4 +181,23 @@ Selection replan_to_goal(const SelectionInputs& in, const planner::Point2& goal)
   return s;
 }
 
+Selection select_escape(const SelectionInputs& in, Breadcrumbs& crumbs) {
+  Selection s;
+  s.outcome = SelectionOutcome::kUnreachable;
+  const planner::Costmap& cm = *in.costmap;
+  const auto start = nearest_free(cm, in.pose.x, in.pose.y, 0.5);
+  // With no free cell near the robot its place is empty: any free crumb is outside it.
+  const std::optional<TravelCost> place = start ? std::optional<TravelCost>(travel_cost(cm, *start)) : std::nullopt;
+  const auto outside = [&](planner::Point2 p) {
+    return cm.is_free(p) && !(place && place->reachable(cm.cell_at(p)));
+  };
+  planner::Path path = crumbs.backtrack({in.pose.x, in.pose.y}, outside);
+  if (path.size() < 2) return s;
+  s.outcome = SelectionOutcome::kPlanned;
+  s.goal_x = path.back().x;
+  s.goal_y = path.back().y;
+  s.path = std::move(path);
+  return s;
+}
+
 }  // namespace lookahead::exploration

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "lookahead/exploration/breadcrumbs.hpp"
 #include "lookahead/exploration/frontier_detector.hpp"
 #include "lookahead/exploration/goal_blacklist.hpp"
 #include "lookahead/exploration/lookahead_mapping.hpp"
@@ -41,6 +42,7 @@ struct MissionStatistics {
   double planning_time = 0.0;  ///< wall clock [s]
   int collisions = 0;
   int safety_stops = 0;  ///< steps the reactive stop held the robot
+  int backtracks = 0;    ///< escapes along the robot's own trail (no frontier was reachable)
   std::size_t retired_frontier_cells = 0;  ///< frontier cells that outlived a visit
   std::size_t scans = 0, map_refreshes = 0;
   bool ended_on_predictions = false;  ///< done because every frontier left was predicted
@@ -96,6 +98,7 @@ class Mission {
   void record();
   void check_end();
   bool goal_still_useful() const;
+  bool backtrack();  ///< follows the trail out of a place with no reachable frontier
   bool path_ahead_blocked(double v) const;
   void hold_or_replan();  ///< counts a reactive stop; gives the path up when it lasts
 
@@ -118,6 +121,8 @@ class Mission {
   std::optional<planner::Point2> goal_;
   /// A goal reached with its frontier still there: retired after the next map update.
   std::optional<planner::Point2> reached_goal_;
+  Breadcrumbs crumbs_;
+  bool backtracking_ = false;  ///< the current goal is the end of a backtrack, not a frontier
   std::unique_ptr<CarmenWriter> log_;
   slam::LaserScan last_scan_;
 

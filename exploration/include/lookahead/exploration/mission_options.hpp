@@ -45,6 +45,9 @@ struct MissionOptions {
   /// corridor within this distance ahead of its body [m] (walls the map has not caught up
   /// with yet).
   double stop_distance = 0.15;
+  /// When no frontier is reachable, retrace the robot's own trail to the last spot outside
+  /// its place on the costmap before calling the robot trapped (breadcrumbs.hpp).
+  bool backtrack = true;
 
   slam::RbpfOptions slam;
   planner::PlannerOptions planner;

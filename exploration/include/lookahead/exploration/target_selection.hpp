@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "lookahead/exploration/breadcrumbs.hpp"
 #include "lookahead/exploration/frontier_detector.hpp"
 #include "lookahead/exploration/goal_blacklist.hpp"
 #include "lookahead/exploration/predicted_map.hpp"
@@ -60,6 +61,12 @@ Selection select_target(const SelectionInputs& in);
 /// A new path to the current goal when the old one got blocked (new walls on it): keeps the
 /// target, so a blocked path does not turn into a new choice. kPlanned or kPlanFailed.
 Selection replan_to_goal(const SelectionInputs& in, const planner::Point2& goal);
+
+/// The way out when no frontier can be reached from the robot's place on the costmap: the
+/// robot's own trail back to its last crumb on a free cell outside that place (the robot's
+/// region on the costmap, from its nearest free cell). kPlanned with the goal at that crumb
+/// (the crumbs on the way are popped), or kUnreachable when no crumb lies outside.
+Selection select_escape(const SelectionInputs& in, Breadcrumbs& crumbs);
 
 /// The free cell of `costmap` nearest to (x, y) within `radius` (a robot brushing a wall
 /// may sit in the inflation zone); nullopt when there is none.

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+// The way back out of a place whose door the safety margin closed behind the robot
+// (kth_0510034869, root cause 4 in the README): the trail as a stack, and the escape plan on
+// a hand-made grid of two rooms joined by a 0.3 m door.
+#include "lookahead/exploration/breadcrumbs.hpp"
+
+#include <gtest/gtest.h>
+
+#include "lookahead/exploration/goal_blacklist.hpp"
+#include "lookahead/exploration/target_selection.hpp"
+#include "lookahead/exploration/target_strategy.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+using slam::OccupancyGrid;
+
+TEST(Breadcrumbs, CrumbsAreDroppedAtTheirSpacing) {
+  Breadcrumbs c(0.125);
+  for (int i = 0; i <= 64; ++i) c.drop({i / 64.0, 0.0});  // 1 m in steps of 1/64 m (exact)
+  EXPECT_EQ(c.size(), 9U);                                 // 0, 0.125, ..., 1
+  EXPECT_THROW(Breadcrumbs(0.0), std::invalid_argument);
+}
+
+TEST(Breadcrumbs, BacktrackRetracesNewestFirstAndPopsWhatItRetraced) {
+  Breadcrumbs c(0.1);
+  for (int i = 0; i <= 10; ++i) c.drop({1.0 * i, 0.0});  // x = 0 .. 10
+  const auto outside = [](planner::Point2 p) { return p.x < 4.5; };
+  const planner::Path back = c.backtrack({10.2, 0.0}, outside);
+  ASSERT_EQ(back.size(), 8U);  // from, then crumbs 10, 9, ..., 4
+  EXPECT_DOUBLE_EQ(back.front().x, 10.2);
+  EXPECT_DOUBLE_EQ(back[1].x, 10.0);
+  EXPECT_DOUBLE_EQ(back.back().x, 4.0);
+  EXPECT_EQ(c.size(), 5U);  // crumbs 0 .. 4: the exit crumb stays
+
+  // From the exit crumb, the next backtrack never leads back to the place it left.
+  const planner::Path further = c.backtrack({4.0, 0.0}, [](planner::Point2 p) { return p.x < 2.5; });
+  ASSERT_EQ(further.size(), 4U);  // from, 4, 3, 2
+  EXPECT_DOUBLE_EQ(further.back().x, 2.0);
+
+  EXPECT_TRUE(c.backtrack({2.0, 0.0}, [](planner::Point2) { return false; }).empty());
+  EXPECT_EQ(c.size(), 3U);  // nothing popped when no crumb qualifies
+}
+
+// Two 2 m x 1.5 m rooms (5 cm cells) side by side; the wall between them has a 6-cell
+// (0.3 m) door, which a 0.18 m inflation closes. The left room is mapped all round, the right
+// one is open on its far side: its frontier is unreachable from the left room.
+OccupancyGrid two_rooms() {
+  OccupancyGrid g;
+  const auto add = [&](int x0, int y0, int x1, int y1, int l) {
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) g.add_log_odds({x, y}, l);
+  };
+  add(0, 0, 81, 29, 3 * g.fixed_miss());
+  add(-1, -1, 82, -1, 3 * g.fixed_hit());
+  add(-1, 30, 82, 30, 3 * g.fixed_hit());
+  add(-1, -1, -1, 30, 3 * g.fixed_hit());
+  add(40, 0, 41, 13, 6 * g.fixed_hit());   // the wall below the door...
+  add(40, 20, 41, 29, 6 * g.fixed_hit());  // ...and above it (door: y cells 14-19)
+  return g;
+}
+
+TEST(SelectEscape, TheTrailLeadsOutThroughTheDoorTheMarginClosed) {
+  const OccupancyGrid map = two_rooms();
+  planner::CostmapOptions co;
+  co.robot_radius = 0.18;
+  co.unknown_is_free = true;
+  const planner::Costmap costmap(map, co);
+  FrontierDetector frontiers;
+  frontiers.rebuild(map);
+  const std::unique_ptr<TargetStrategy> strategy = make_strategy("nearest");
+  GoalBlacklist blacklist{BlacklistOptions{0.5, 60.0, 2}};
+  SelectionInputs in;
+  in.map = &map;
+  in.costmap = &costmap;
+  in.frontiers = &frontiers;
+  in.strategy = strategy.get();
+  in.blacklist = &blacklist;
+  in.pose = {0.5, 0.75, 0.0};
+  in.planner.max_samples = 500;
+  ASSERT_EQ(select_target(in).outcome, SelectionOutcome::kUnreachable);
+
+  // The robot came from the right room through the door's middle (y = 0.85 m).
+  Breadcrumbs crumbs(0.1);
+  for (double x = 3.0; x > 0.5; x -= 0.05) crumbs.drop({x, 0.85});
+  const Selection s = select_escape(in, crumbs);
+  ASSERT_EQ(s.outcome, SelectionOutcome::kPlanned);
+  EXPECT_GT(s.goal_x, 2.05 + 0.18);  // beyond the door's inflated band, in the right room
+  EXPECT_LT(s.goal_x, 2.6);          // the nearest crumb out, not the far end of the trail
+  EXPECT_TRUE(costmap.is_free({s.goal_x, s.goal_y}));
+  EXPECT_FALSE(costmap.segment_is_free({0.5, 0.85}, {s.goal_x, s.goal_y}));  // the margin closed it
+
+  // From the goal, the frontier of the right room is within reach again.
+  in.pose = {s.goal_x, s.goal_y, 0.0};
+  EXPECT_EQ(select_target(in).outcome, SelectionOutcome::kPlanned);
+
+  // With no crumb outside the left room there is no way out: trapped, as before.
+  Breadcrumbs inside(0.1);
+  for (double x = 1.5; x > 0.5; x -= 0.05) inside.drop({x, 0.85});
+  in.pose = {0.5, 0.75, 0.0};
+  EXPECT_EQ(select_escape(in, inside).outcome, SelectionOutcome::kUnreachable);
+}
+
+}  // namespace
+}  // namespace lookahead::exploration
