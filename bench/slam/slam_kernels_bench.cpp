@@ -77,6 +77,19 @@ void BM_InsertScan_Lookahead(benchmark::State& state) {
 }
 BENCHMARK(BM_InsertScan_Lookahead)->Unit(benchmark::kMicrosecond);
 
+// The same scan traced point to point (InsertOptions::exact_rays, the exploration default).
+void BM_InsertScan_Lookahead_ExactRays(benchmark::State& state) {
+  auto& f = fixture();
+  InsertOptions exact{kUsableRange};
+  exact.exact_rays = true;
+  for (auto _ : state) {
+    OccupancyGrid g = f.grid;
+    insert_scan(g, f.probe.odometry, f.probe, exact);
+    benchmark::DoNotOptimize(g);
+  }
+}
+BENCHMARK(BM_InsertScan_Lookahead_ExactRays)->Unit(benchmark::kMicrosecond);
+
 void BM_InsertScan_Mrpt(benchmark::State& state) {
   auto& f = fixture();
   const auto obs = f.mrpt_scans[kMapScans];

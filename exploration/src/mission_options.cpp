@@ -12,6 +12,7 @@ MissionOptions MissionOptions::defaults() {
   o.slam.particles = 30;
   // A simulated laser's no-return means "nothing within range": clear free space with it.
   o.slam.insert.clear_no_returns = true;
+  o.slam.insert.exact_rays = true;  // long grazing beams would erase corridor walls
   // Planning ends by a sample count, not the clock: fast, and the same on any machine.
   o.planner.time_budget = 10.0;  // a guard only: the sample count ends every search
   o.planner.max_samples = 3000;

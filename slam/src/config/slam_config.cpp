@@ -35,6 +35,7 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v("distance_field_radius", o.grid.distance_field_radius, "distance field kept up to [m]");
   v("max_usable_range", o.insert.max_usable_range, "beams inserted up to [m]");
   v("clear_no_returns", o.insert.clear_no_returns, "no-returns clear free space to max range");
+  v("exact_rays", o.insert.exact_rays, "trace beams point to point, not cell centre to centre");
   v.section("motion");
   v("srr", o.motion.srr, "translation error per metre [m/m]");
   v("srt", o.motion.srt, "rotation error per metre [rad/m]");

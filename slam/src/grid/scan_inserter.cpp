@@ -9,6 +9,7 @@ namespace {
 struct BeamEnd {
   CellIndex cell;
   bool hit;
+  double x, y;  ///< the true end point, in cell units (exact rays)
 };
 
 // Caches the tile of the last cell visited, so a ray pays the tile lookup (and the
@@ -60,8 +61,9 @@ std::vector<BeamEnd> beam_ends(const OccupancyGrid& grid, const Pose2& laser,
     if (!scan.is_return(i) && !clear) continue;
     const double r = clear ? std::min(scan.max_range, usable) : std::min<double>(scan.ranges[i], usable);
     const double a = laser.theta + scan.bearing(i);
-    ends.push_back({grid.cell_at(laser.x + r * std::cos(a), laser.y + r * std::sin(a)),
-                    !clear && scan.ranges[i] < usable});
+    const double x = laser.x + r * std::cos(a), y = laser.y + r * std::sin(a);
+    ends.push_back({grid.cell_at(x, y), !clear && scan.ranges[i] < usable, x / grid.resolution(),
+                    y / grid.resolution()});
   }
   return ends;
 }
@@ -80,14 +82,19 @@ void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan,
   const int miss = grid.fixed_miss();
   const int floor = grid.fixed_min();
   for (const BeamEnd& e : ends) {  // phase 2: misses along every beam, sparing the hits
-    trace_cells(origin, e.cell, [&](CellIndex c) {
+    const auto pass = [&](CellIndex c) {
       if (c == e.cell) return false;  // the end cell is phase 3's (or the last loop's)
       const int i = OccupancyGrid::local(c);
       if (!miss_changes(cursor.peek(c), i, floor)) return true;
       GridTile& t = cursor.at(c);
       if (!(t.flags[i] & GridTile::kHitThisScan)) grid.add_log_odds_in(t, c, miss);
       return true;
-    });
+    };
+    if (options.exact_rays) {
+      trace_segment(laser.x / grid.resolution(), laser.y / grid.resolution(), e.x, e.y, pass);
+    } else {
+      trace_cells(origin, e.cell, pass);
+    }
   }
   const int hit = grid.fixed_hit();
   for (const BeamEnd& e : ends) {  // phase 3: hits, once per cell

@@ -2,6 +2,8 @@
 // Ray-cast insertion of a laser scan into an occupancy grid (inverse sensor model).
 #pragma once
 
+#include <cmath>
+
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +22,14 @@ struct InsertOptions {
   /// missing echo may be glass or a dark surface, as GMapping assumes); on for simulated
   /// ones, whose no-return means exactly "nothing within range".
   bool clear_no_returns = false;
+  /// Trace each beam from the laser's true position to its true end point (trace_segment),
+  /// not from cell centre to cell centre (trace_cells). A centre-to-centre line that grazes a
+  /// wall dips into the wall's row up to 0.5 / slope cells before its end cell, so the far,
+  /// grazing beams of a long corridor erase the wall the near beams mark: on the KTH plans
+  /// (12 m, 720 beams) the corridor walls faded into unknown cells, frontiers lined them, and
+  /// plans went through them. Off by default in `slam` (the log figures were measured
+  /// without it); on in exploration missions.
+  bool exact_rays = false;
 };
 
 /// Inserts `scan` taken at robot pose `robot` into `grid`. Every cell a beam crosses gets
@@ -53,6 +63,42 @@ void trace_cells(CellIndex from, CellIndex to, Visit&& visit) {
     const int m = static_cast<int>(minor >> 32);
     if (!visit(x_major ? CellIndex{major, m} : CellIndex{m, major})) return;
   }
+}
+
+/// Calls visit(cell) for the cells of the segment between two points given in cell units
+/// (cell (i, j) spans [i, i + 1) x [j, j + 1)), from the start's cell to the end's, one cell
+/// per step along the major axis: at each inner column (row) the cell the segment crosses at
+/// that column's centre line. Every cell visited is one the true segment passes through, so
+/// a beam ending on a wall face never visits the wall's cells before its end cell. visit
+/// returns false to stop.
+template <typename Visit>
+void trace_segment(double from_x, double from_y, double to_x, double to_y, Visit&& visit) {
+  const bool x_major = std::abs(to_x - from_x) >= std::abs(to_y - from_y);
+  const double f_major = x_major ? from_x : from_y, f_minor = x_major ? from_y : from_x;
+  const double t_major = x_major ? to_x : to_y, t_minor = x_major ? to_y : to_x;
+  const auto cell = [x_major](int major, int minor) {
+    return x_major ? CellIndex{major, minor} : CellIndex{minor, major};
+  };
+  const int first = static_cast<int>(std::floor(f_major));
+  const int last = static_cast<int>(std::floor(t_major));
+  const CellIndex start = cell(first, static_cast<int>(std::floor(f_minor)));
+  const CellIndex end = cell(last, static_cast<int>(std::floor(t_minor)));
+  if (first == last) {  // under one column: the start's cell, then the end's if it differs
+    if (visit(start) && !(end == start)) visit(end);
+    return;
+  }
+  if (!visit(start)) return;
+  const int step = last > first ? 1 : -1;
+  const double slope = (t_minor - f_minor) / (t_major - f_major);
+  // Inner columns at their centre line, the minor coordinate in 32.32 fixed point (as in
+  // trace_cells: a step has no data-dependent branch).
+  constexpr double kOne = 4294967296.0;
+  std::int64_t minor = static_cast<std::int64_t>(std::floor((f_minor + (first + step + 0.5 - f_major) * slope) * kOne));
+  const auto minor_step = static_cast<std::int64_t>(std::llround(step * slope * kOne));
+  for (int major = first + step; major != last; major += step, minor += minor_step) {
+    if (!visit(cell(major, static_cast<int>(minor >> 32)))) return;
+  }
+  visit(end);
 }
 
 }  // namespace lookahead::slam
