@@ -26,8 +26,17 @@ bool FrontierDetector::is_free(const slam::OccupancyGrid& grid, CellIndex c) con
 bool FrontierDetector::is_frontier(const slam::OccupancyGrid& grid, CellIndex c) const {
   if (!is_free(grid, c)) return false;
   // 4-neighbourhood: a diagonal unknown cell alone is a gap between beams, not a way out.
-  const bool borders_unknown = !grid.is_known({c.x + 1, c.y}) || !grid.is_known({c.x - 1, c.y}) ||
-                               !grid.is_known({c.x, c.y + 1}) || !grid.is_known({c.x, c.y - 1});
+  // Unexplored is neither free nor occupied: a cell one grazing beam crossed is known but
+  // undecided, and at the edge of the seen region such cells form a band between the free
+  // and the never-seen cells. Counting only never-seen cells hid that frontier (the door
+  // to the lower wing of kth_50025630, seen from afar: the mission ended trapped at 90.7 %).
+  const auto unexplored = [&](CellIndex n) {
+    if (!grid.is_known(n)) return true;
+    const double p = grid.probability(n);
+    return p >= options_.free_threshold && p < options_.occupied_threshold;
+  };
+  const bool borders_unknown = unexplored({c.x + 1, c.y}) || unexplored({c.x - 1, c.y}) ||
+                               unexplored({c.x, c.y + 1}) || unexplored({c.x, c.y - 1});
   if (!borders_unknown) return false;
   // A free cell that touches a wall and unknown space is the unseen inside of that wall
   // (beams graze a wall and leave gaps between its hits), not a way into new space: going

@@ -276,11 +276,19 @@ void Mission::select_new_target() {
     status_ = MissionStatus::kDone;
     stats_.ended_on_predictions = s.rest_predicted;
   } else if (s.outcome != SelectionOutcome::kPlanned) {
-    // Maybe only for now: turn once more to look around, and give up after three tries.
-    // Frontiers that are only blacklisted for a while are no trap: the robot looks around
-    // until an entry expires (each spot is retried at most max_strikes times).
-    if (!s.waiting_on_blacklist && s.outcome == SelectionOutcome::kUnreachable && backtrack()) return;
-    if (!s.waiting_on_blacklist && ++unreachable_streak_ >= 3) status_ = MissionStatus::kTrapped;
+    // Maybe only for now: retrace the trail out of here, or turn once more to look around,
+    // and give up after three tries (a backtrack that does not lead to a target counts as
+    // one). Frontiers that are only blacklisted for a while are no trap: the robot looks
+    // around until an entry expires (each spot is retried at most max_strikes times).
+    if (s.waiting_on_blacklist) {
+      turned_ = 0.0;
+      return;
+    }
+    if (++unreachable_streak_ >= 3) {
+      status_ = MissionStatus::kTrapped;
+      return;
+    }
+    if (s.outcome == SelectionOutcome::kUnreachable && backtrack()) return;
     turned_ = 0.0;
   } else {
     unreachable_streak_ = 0;

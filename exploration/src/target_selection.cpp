@@ -69,6 +69,9 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
   any_reachable = false;
   any_waiting = false;
   for (const FrontierCluster& f : clusters) {
+    spdlog::trace("cluster of {} cells at ({:.2f}, {:.2f}): goal {} ({:.2f}, {:.2f}), cost {:.1f} m", f.cells.size(),
+                  f.centroid_x, f.centroid_y, f.has_goal, f.goal_x, f.goal_y,
+                  f.has_goal ? cost.at(cm.cell_at({f.goal_x, f.goal_y})) : -1.0);
     if (!f.has_goal) continue;
     const double d = cost.at(cm.cell_at({f.goal_x, f.goal_y}));
     if (!std::isfinite(d)) continue;

@@ -42,6 +42,20 @@ TEST(FrontierDetector, FreeCellsNextToUnknownAreFrontiers) {
   EXPECT_FALSE(d.is_frontier(g, {-1, 5}));   // wall
 }
 
+// Regression (kth_50025630, trapped at 90.7 %): the edge of the seen region is often a band
+// of cells one grazing beam crossed, known but neither free nor occupied. The frontier is
+// the free side of that band, not hidden behind it.
+TEST(FrontierDetector, CellsOneBeamCrossedDoNotHideTheFrontier) {
+  OccupancyGrid g = open_room();
+  for (int y = 0; y <= 19; ++y) g.add_log_odds({40, y}, g.fixed_miss());  // one miss: undecided
+  ASSERT_TRUE(g.is_known({40, 5}));
+  ASSERT_GT(g.probability({40, 5}), FrontierOptions{}.free_threshold);
+  FrontierDetector d;
+  d.rebuild(g);
+  EXPECT_EQ(d.cells().size(), 18u);  // x = 39 again, y = 1..18
+  for (const CellIndex c : d.cells()) EXPECT_EQ(c.x, 39);
+}
+
 TEST(FrontierDetector, ClusterGoalIsFreeWithClearance) {
   const OccupancyGrid g = open_room();
   FrontierDetector d;
