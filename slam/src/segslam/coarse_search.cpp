@@ -10,13 +10,6 @@
 namespace lookahead::slam::segslam {
 namespace {
 
-// floor() as an int without the libm call (this is the innermost loop of matching); exact
-// for every value an int holds.
-int floor_int(double v) {
-  const int i = static_cast<int>(v);
-  return i - (v < i);
-}
-
 struct Shape {
   int n, na, m;  // half extents in steps, translations per axis (2n + 1)
   double inv;    // 1 / resolution
@@ -49,7 +42,7 @@ std::vector<Points2> rotations(const Points2& points, const Pose2& centre, const
 // above, an upper bound of the score over the block of translations that starts at (x, y).
 int count_near(const NearField& f, std::size_t level, double x, double y, const Points2& rotated, double inv) {
   int near = 0;
-  for (const auto& p : rotated) near += f.near(level, floor_int((x + p.x()) * inv), floor_int((y + p.y()) * inv));
+  for (const auto& p : rotated) near += f.near(level, NearField::floor_int((x + p.x()) * inv), NearField::floor_int((y + p.y()) * inv));
   return near;
 }
 

@@ -41,17 +41,29 @@ Points2 obstacle_points(const OccupancyGrid& map) {
   return out;
 }
 
+// likelihood.hit_ratio's count of hits (end points within its hit distance of an obstacle)
+// read from the candidate's hit field: the same cells (cell_at divides), bits for tiles.
+int hit_count(const NearField& hits, const Pose2& robot, const PreparedScan& scan) {
+  const double c = std::cos(robot.theta), s = std::sin(robot.theta), res = hits.resolution();
+  int n = 0;
+  for (std::size_t i = 0; i < scan.x.size(); ++i) {
+    n += hits.near(0, NearField::floor_int((robot.x + c * scan.x[i] - s * scan.y[i]) / res),
+                   NearField::floor_int((robot.y + s * scan.x[i] + c * scan.y[i]) / res));
+  }
+  return n;
+}
+
 // Exhaustive search of a pose grid around `centre` for the best score.
 template <typename Score>
 Pose2 grid_search(const Pose2& centre, double radius, double step, double angle, double angle_step, Score&& score) {
   const int n = static_cast<int>(radius / step), na = static_cast<int>(angle / angle_step);
   Pose2 best = centre;
-  double best_score = score(centre);
+  auto best_score = score(centre);
   for (int a = -na; a <= na; ++a) {
     for (int i = -n; i <= n; ++i) {
       for (int j = -n; j <= n; ++j) {
         const Pose2 p{centre.x + i * step, centre.y + j * step, normalize_angle(centre.theta + a * angle_step)};
-        const double v = score(p);
+        const auto v = score(p);
         if (v > best_score) best_score = v, best = p;
       }
     }
@@ -64,7 +76,7 @@ Pose2 grid_search(const Pose2& centre, double radius, double step, double angle,
 // optimum as trying every pose), then a fine grid scored by hits within the sensor model's
 // hit distance.
 Pose2 coarse_search(const OccupancyGrid& map, const GridMatchTarget& target, const Points2& cloud, const Pose2& guess,
-                    const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
+                    const MatchingOptions& o) {
   Points2 thin;
   const std::size_t every = std::max<std::size_t>(1, cloud.size() / 60);
   for (std::size_t i = 0; i < cloud.size(); i += every) thin.push_back(cloud[i]);
@@ -73,7 +85,7 @@ Pose2 coarse_search(const OccupancyGrid& map, const GridMatchTarget& target, con
   const PreparedScan scan = as_scan(cloud);
   // Half the coarse step around its best pose, on a grid ICP converges from (5 x 5 x 5).
   return grid_search(coarse, grid.step / 2, grid.step / 4, 0.025, 0.0125,
-                     [&](const Pose2& p) { return likelihood.hit_ratio(map, p, scan); });
+                     [&](const Pose2& p) { return hit_count(target.hits, p, scan); });
 }
 
 }  // namespace
@@ -108,15 +120,16 @@ PoseGrid coarse_pose_grid(const OccupancyGrid& map, const MatchingOptions& o) {
   return {o.search_radius, step, o.search_angle, 0.05};
 }
 
-GridMatchTarget match_target_of(const OccupancyGrid& map, const MatchingOptions& o) {
-  return {NearField(map, branch_and_bound_dilations(coarse_pose_grid(map, o), map.resolution())), icp_target_of(map, o)};
+GridMatchTarget match_target_of(const OccupancyGrid& map, const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
+  return {NearField(map, GridTile::kFar - 1, branch_and_bound_dilations(coarse_pose_grid(map, o), map.resolution())),
+          NearField(map, likelihood.hit_dist2()), icp_target_of(map, o)};
 }
 
 WindowMatch match_window(const OccupancyGrid& candidate, const GridMatchTarget& target, const LookaheadWindow& window,
-                         const Pose2& guess, const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
+                         const Pose2& guess, const MatchingOptions& o) {
   WindowMatch m;
   if (target.icp.size() < 10 || window.cloud.size() < 10) return m;
-  const Pose2 seed = coarse_search(candidate, target, window.cloud, guess, o, likelihood);
+  const Pose2 seed = coarse_search(candidate, target, window.cloud, guess, o);
   const IcpResult icp = icp_binned(window.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance, o.bin_size});
   m.pose = icp.transform;
   m.icp_error = icp.mean_error;

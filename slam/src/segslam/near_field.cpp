@@ -23,7 +23,8 @@ void or_shifted(std::vector<std::uint64_t>& row, std::size_t offset, std::size_t
 
 }  // namespace
 
-NearField::NearField(const OccupancyGrid& map, const std::vector<int>& dilations) : resolution_(map.resolution()) {
+NearField::NearField(const OccupancyGrid& map, int max_dist2, const std::vector<int>& dilations)
+    : resolution_(map.resolution()) {
   Bits base;
   CellIndex lo, hi;
   if (map.known_bounds(lo, hi)) {  // whole tiles: the distance field lives in them too
@@ -35,7 +36,7 @@ NearField::NearField(const OccupancyGrid& map, const std::vector<int>& dilations
         const GridTile* t = map.tile(tx, ty);
         if (!t) continue;
         for (int i = 0; i < GridTile::kCells; ++i) {
-          if (t->dist2[static_cast<std::size_t>(i)] >= GridTile::kFar) continue;
+          if (t->dist2[static_cast<std::size_t>(i)] > max_dist2) continue;
           const int x = (tx << GridTile::kBits) + (i & (GridTile::kSide - 1)) - base.x0;
           const int y = (ty << GridTile::kBits) + (i >> GridTile::kBits) - base.y0;
           base.words[static_cast<std::size_t>(y) * base.row_words + static_cast<std::size_t>(x >> 6)] |= std::uint64_t{1} << (x & 63);

@@ -193,11 +193,11 @@ WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, con
       const std::lock_guard<std::mutex> lock(cache_mutex_);
       target = match_targets_[candidate];
     }
-    if (!target) target = std::make_shared<const GridMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.matching));
+    if (!target) target = std::make_shared<const GridMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.matching, likelihood_));
     m = options_.matching.use_localization_filter
             ? localize_window(segmap_.at(candidate).map, w, rounded, options_.matching, likelihood_,
                               localization_seed(key))
-            : match_window(segmap_.at(candidate).map, *target, w, rounded, options_.matching, likelihood_);
+            : match_window(segmap_.at(candidate).map, *target, w, rounded, options_.matching);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     match_targets_[candidate] = target;
     match_cache_.emplace(key, m);

@@ -46,7 +46,7 @@ TEST(NearField, DilatedLevelsAreTheBoxTest) {
   std::mt19937_64 rng(5);
   const OccupancyGrid map = sparse_map(rng);
   const std::vector<int> widths{1, 2, 7, 70};
-  const NearField field(map, widths);
+  const NearField field(map, GridTile::kFar - 1, widths);
   ASSERT_EQ(field.levels(), widths.size() + 1);
   const auto near = [&](int x, int y) { return map.dist2({x, y}) < GridTile::kFar; };
   std::uniform_int_distribution<int> cell(-160, 100);
@@ -64,13 +64,19 @@ TEST(NearField, DilatedLevelsAreTheBoxTest) {
     }
   }
   EXPECT_GT(near_seen, 100);  // the comparison saw both answers
+  // A smaller distance: the cells within it, no more.
+  const NearField close(map, 4);
+  for (int k = 0; k < 3000; ++k) {
+    const int x = cell(rng), y = cell(rng);
+    ASSERT_EQ(close.near(0, x, y), map.dist2({x, y}) <= 4) << x << " " << y;
+  }
 }
 
 // The branch and bound returns exactly the exhaustive search's pose and score (including
 // which of equal scores), from guesses scattered around the true pose.
 void expect_same_optimum(const OccupancyGrid& map, const Points2& points, std::mt19937_64& rng, int trials) {
   const PoseGrid grid{2.0, 0.24, 0.25, 0.05};
-  const NearField field(map, branch_and_bound_dilations(grid, map.resolution()));
+  const NearField field(map, GridTile::kFar - 1, branch_and_bound_dilations(grid, map.resolution()));
   std::uniform_real_distribution<double> off(-1.5, 1.5), turn(-0.3, 0.3);
   for (int t = 0; t < trials; ++t) {
     const Pose2 guess{4.0 + off(rng), 1.0 + off(rng), turn(rng)};
@@ -96,7 +102,7 @@ TEST(CoarseSearch, BranchAndBoundBreaksTiesAsTheExhaustiveSearch) {
 TEST(CoarseSearch, FindsTheScanPoseFromAFarGuess) {
   const OccupancyGrid map = room_map();
   const PoseGrid grid{2.0, 0.24, 0.25, 0.05};
-  const NearField field(map, branch_and_bound_dilations(grid, map.resolution()));
+  const NearField field(map, GridTile::kFar - 1, branch_and_bound_dilations(grid, map.resolution()));
   const Pose2 truth{4.2, 1.1, 0.05};
   const CoarseResult r = coarse_search_branch_and_bound(field, scan_points(truth, 3), {5.1, 0.4, -0.1}, grid);
   EXPECT_NEAR(r.pose.x, truth.x, grid.step);
@@ -106,7 +112,7 @@ TEST(CoarseSearch, FindsTheScanPoseFromAFarGuess) {
 
 TEST(CoarseSearch, BranchAndBoundNeedsTheGridsLevels) {
   const OccupancyGrid map = room_map();
-  const NearField field(map, {3});
+  const NearField field(map, GridTile::kFar - 1, {3});
   EXPECT_THROW(coarse_search_branch_and_bound(field, scan_points({4, 1, 0}, 6), {4, 1, 0}, {}), std::invalid_argument);
 }
 

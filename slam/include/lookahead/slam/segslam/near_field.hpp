@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The cells of a 2D submap that lie within its distance-field radius of an obstacle, as rows
-// of bits over the map's tiles, plus dilated copies ("is any cell of this W x W box near?")
+// The cells of a 2D submap that lie within a distance of an obstacle (its distance field at
+// or below a squared distance), as rows of bits over the map's tiles, plus dilated copies ("is any cell of this W x W box near?")
 // that bound the coarse match score over a block of poses (coarse_search.hpp). A closed
 // submap never changes, so SegSLAM builds this once per match candidate.
 #pragma once
@@ -14,9 +14,18 @@ namespace lookahead::slam::segslam {
 
 class NearField {
  public:
-  /// Level 0 is the field itself; level l (l >= 1) holds, at cell c, whether any cell of
+  /// A cell is near when its squared distance to an obstacle is at most `max_dist2`
+  /// [cells^2] (GridTile::kFar - 1: anywhere the distance field reaches). Level 0 is the
+  /// field itself; level l (l >= 1) holds, at cell c, whether any cell of
   /// [c.x, c.x + w - 1] x [c.y, c.y + w - 1] is near, for w = dilations[l - 1] [cells].
-  NearField(const OccupancyGrid& map, const std::vector<int>& dilations);
+  NearField(const OccupancyGrid& map, int max_dist2, const std::vector<int>& dilations = {});
+
+  /// floor(v) as an int without the libm call (cell indices in the innermost loops of
+  /// matching); exact for every value an int holds.
+  static int floor_int(double v) {
+    const int i = static_cast<int>(v);
+    return i - (v < i);
+  }
 
   [[nodiscard]] double resolution() const { return resolution_; }
   [[nodiscard]] std::size_t levels() const { return levels_.size(); }
