@@ -46,6 +46,10 @@ int count_near(const NearField& f, std::size_t level, double x, double y, const 
   return near;
 }
 
+// The largest block of translations per axis: wider blocks bound almost every point as near
+// (their boxes span metres) and their levels cost more to build than they prune.
+constexpr int kTopBlock = 8;
+
 }  // namespace
 
 std::vector<int> branch_and_bound_dilations(const PoseGrid& grid, double resolution) {
@@ -53,7 +57,7 @@ std::vector<int> branch_and_bound_dilations(const PoseGrid& grid, double resolut
   std::vector<int> out;
   // A block of L translations moves a point by (L - 1) step: that many cells, rounded up,
   // plus one for the floor of the block's first point (the bound must never be below).
-  for (int length = 2; length / 2 < s.m; length *= 2) {
+  for (int length = 2; length <= kTopBlock && length / 2 < s.m; length *= 2) {
     out.push_back(static_cast<int>(std::ceil((length - 1) * grid.step * s.inv)) + 2);
   }
   return out;
@@ -107,7 +111,12 @@ CoarseResult coarse_search_branch_and_bound(const NearField& field, const Points
     stack.insert(stack.end(), blocks.rbegin(), blocks.rend());
   };
   std::vector<Block> roots;
-  for (int a = -s.na; a <= s.na; ++a) roots.push_back(block(top, a, -s.n, -s.n));
+  const int side = 1 << top;
+  for (int a = -s.na; a <= s.na; ++a) {
+    for (int i = -s.n; i <= s.n; i += side) {
+      for (int j = -s.n; j <= s.n; j += side) roots.push_back(block(top, a, i, j));
+    }
+  }
   push_sorted(roots);
   CoarseResult best{centre, -1};
   long best_order = std::numeric_limits<long>::max();
