@@ -40,13 +40,12 @@ class BinIndex {
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
     for (std::size_t i = 0; i < points_.size(); ++i) order_[fill[cell_of[i]]++] = i;
   }
-  /// Indices of the points within `radius` of q.
-  std::vector<std::size_t> within(const Eigen::Vector2d& q, double radius) const {
-    std::vector<std::size_t> out;
+  /// Indices of the points within `radius` of q, into `out` (reused: no allocation per query).
+  void within(const Eigen::Vector2d& q, double radius, std::vector<std::size_t>& out) const {
+    out.clear();
     for_each_near(q, radius, [&](std::size_t i) {
       if ((points_[i] - q).norm() <= radius) out.push_back(i);
     });
-    return out;
   }
   /// Index of the nearest point within `max_d`, or -1.
   long nearest(const Eigen::Vector2d& q, double max_d) const {
@@ -111,8 +110,9 @@ namespace {
 // direction of least spread); zero where there are too few to tell.
 std::vector<Eigen::Vector2d> normals_of(const Points2& target, const BinIndex& index, double radius) {
   std::vector<Eigen::Vector2d> normals(target.size(), Eigen::Vector2d::Zero());
+  std::vector<std::size_t> near;
   for (std::size_t i = 0; i < target.size(); ++i) {
-    const std::vector<std::size_t> near = index.within(target[i], radius);
+    index.within(target[i], radius, near);
     if (near.size() < 3) continue;
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     for (std::size_t j : near) mean += target[j];
