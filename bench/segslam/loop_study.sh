@@ -72,20 +72,28 @@ python3 - "$OUT" <<'PY' | tee "$OUT/report.md"
 import statistics as st, sys, subprocess, collections, glob
 rows = [l.split() for f in sorted(glob.glob(sys.argv[1] + '/runs-*.txt')) for l in open(f) if l.strip()]
 by = collections.defaultdict(list)
+seed_time = collections.defaultdict(dict)
 for m, n, s, e, t in rows:
     by[(m, int(n))].append((float(e), float(t)))
+    seed_time[(int(n), s)][m] = float(t)
 commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'], capture_output=True, text=True).stdout.strip()
 cpu = [l.split(':')[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')][0]
 print(f"commit {commit}, {cpu}; loaded machine (other builds running): times are indicative")
 print()
 methods = [m for m in ('rbpf', 'segslam', 'segslam-locking') if any(k[0] == m for k in by)]
+others = [m for m in methods if m != 'rbpf'] if 'rbpf' in methods else []
 print("| particles | runs | " + " | ".join(f"{m} error m (mean / std)" for m in methods) + " | "
-      + " | ".join(f"{m} time s (median)" for m in methods) + " |")
-print("|---|---|" + "---|" * (2 * len(methods)))
+      + " | ".join(f"{m} time s (median)" for m in methods) + " | "
+      + " | ".join(f"{m} / rbpf time (median of per-seed ratios)" for m in others) + " |")
+print("|---|---|" + "---|" * (2 * len(methods) + len(others)))
+def ratio(m, n):
+    r = [d[m] / d['rbpf'] for (k, _), d in seed_time.items() if k == n and m in d and 'rbpf' in d]
+    return f"{st.median(r):.2f}" if r else "-"
 f = lambda v: f"{st.mean(v):.2f} / {st.stdev(v):.2f}" if len(v) > 1 else (f"{v[0]:.2f} / -" if v else "-")
 med = lambda v: f"{st.median(v):.1f}" if v else "-"
 for n in sorted({k[1] for k in by}):
     cells = [by.get((m, n), []) for m in methods]
     print(f"| {n} | {len(cells[0])} | " + " | ".join(f([e for e, _ in c]) for c in cells) + " | "
-          + " | ".join(med([t for _, t in c]) for c in cells) + " |")
+          + " | ".join(med([t for _, t in c]) for c in cells) + " | "
+          + " | ".join(ratio(m, n) for m in others) + " |")
 PY

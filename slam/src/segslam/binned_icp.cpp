@@ -18,50 +18,68 @@ std::int64_t bin_key(double x, double y, double bin) {
   return (ix << 32) ^ (iy & 0xffffffff);
 }
 
-// The target's points hashed by bin, for neighbour queries within max_distance.
+// The target's points sorted into a dense grid of square cells (counting sort, so each
+// cell lists its points in index order), for neighbour queries within max_distance: a cell
+// is one array read, where a hash of bins cost most of ICP's time.
 class BinIndex {
  public:
   BinIndex(Points2 points, double cell) : points_(std::move(points)), cell_(cell) {
-    for (std::size_t i = 0; i < points_.size(); ++i) bins_[bin_key(points_[i].x(), points_[i].y(), cell_)].push_back(i);
-  }
-  /// Indices of the points within `radius` of q.
-  std::vector<std::size_t> within(const Eigen::Vector2d& q, double radius) const {
-    const int reach = static_cast<int>(std::ceil(radius / cell_));
-    std::vector<std::size_t> out;
-    for (int dx = -reach; dx <= reach; ++dx) {
-      for (int dy = -reach; dy <= reach; ++dy) {
-        const auto it = bins_.find(bin_key(q.x() + dx * cell_, q.y() + dy * cell_, cell_));
-        if (it == bins_.end()) continue;
-        for (std::size_t i : it->second) {
-          if ((points_[i] - q).norm() <= radius) out.push_back(i);
-        }
-      }
+    if (points_.empty()) return;
+    double x0 = points_[0].x(), y0 = points_[0].y(), x1 = x0, y1 = y0;
+    for (const auto& p : points_) x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y()), x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
+    ix0_ = static_cast<long>(std::floor(x0 / cell_)), iy0_ = static_cast<long>(std::floor(y0 / cell_));
+    w_ = static_cast<long>(std::floor(x1 / cell_)) - ix0_ + 1, h_ = static_cast<long>(std::floor(y1 / cell_)) - iy0_ + 1;
+    start_.assign(static_cast<std::size_t>(w_ * h_ + 1), 0);
+    std::vector<std::size_t> cell_of(points_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      cell_of[i] = static_cast<std::size_t>(slot(static_cast<long>(std::floor(points_[i].x() / cell_)), static_cast<long>(std::floor(points_[i].y() / cell_))));
+      ++start_[cell_of[i] + 1];
     }
-    return out;
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    order_.resize(points_.size());
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < points_.size(); ++i) order_[fill[cell_of[i]]++] = i;
+  }
+  /// Indices of the points within `radius` of q, into `out` (reused: no allocation per query).
+  void within(const Eigen::Vector2d& q, double radius, std::vector<std::size_t>& out) const {
+    out.clear();
+    for_each_near(q, radius, [&](std::size_t i) {
+      if ((points_[i] - q).norm() <= radius) out.push_back(i);
+    });
   }
   /// Index of the nearest point within `max_d`, or -1.
   long nearest(const Eigen::Vector2d& q, double max_d) const {
-    const int reach = static_cast<int>(std::ceil(max_d / cell_));
     long best = -1;
     double best_d2 = max_d * max_d;
-    for (int dx = -reach; dx <= reach; ++dx) {
-      for (int dy = -reach; dy <= reach; ++dy) {
-        const auto it = bins_.find(bin_key(q.x() + dx * cell_, q.y() + dy * cell_, cell_));
-        if (it == bins_.end()) continue;
-        for (std::size_t i : it->second) {
-          const double d2 = (points_[i] - q).squaredNorm();
-          if (d2 < best_d2) best_d2 = d2, best = static_cast<long>(i);
-        }
-      }
-    }
+    for_each_near(q, max_d, [&](std::size_t i) {
+      const double d2 = (points_[i] - q).squaredNorm();
+      if (d2 < best_d2) best_d2 = d2, best = static_cast<long>(i);
+    });
     return best;
   }
   [[nodiscard]] const Points2& points() const { return points_; }
 
  private:
+  long slot(long ix, long iy) const { return (iy - iy0_) * w_ + (ix - ix0_); }
+  // Every point of the cells within `radius` of q's cell (a superset of the points within it).
+  template <typename F>
+  void for_each_near(const Eigen::Vector2d& q, double radius, F&& f) const {
+    if (points_.empty()) return;
+    const long reach = static_cast<long>(std::ceil(radius / cell_));
+    const long qx = static_cast<long>(std::floor(q.x() / cell_)), qy = static_cast<long>(std::floor(q.y() / cell_));
+    for (long ix = std::max(qx - reach, ix0_); ix <= std::min(qx + reach, ix0_ + w_ - 1); ++ix) {
+      for (long iy = std::max(qy - reach, iy0_); iy <= std::min(qy + reach, iy0_ + h_ - 1); ++iy) {
+        const auto c = static_cast<std::size_t>(slot(ix, iy));
+        for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) f(order_[k]);
+      }
+    }
+  }
+
   Points2 points_;
   double cell_;
-  std::unordered_map<std::int64_t, std::vector<std::size_t>> bins_;
+  long ix0_ = 0, iy0_ = 0, w_ = 0, h_ = 0;  // first cell and extent of the grid [cells]
+  std::vector<std::size_t> start_;  // cell c's points are order_[start_[c] .. start_[c + 1])
+  std::vector<std::size_t> order_;
 };
 
 Eigen::Vector2d apply(const Pose2& t, const Eigen::Vector2d& p) {
@@ -92,8 +110,9 @@ namespace {
 // direction of least spread); zero where there are too few to tell.
 std::vector<Eigen::Vector2d> normals_of(const Points2& target, const BinIndex& index, double radius) {
   std::vector<Eigen::Vector2d> normals(target.size(), Eigen::Vector2d::Zero());
+  std::vector<std::size_t> near;
   for (std::size_t i = 0; i < target.size(); ++i) {
-    const std::vector<std::size_t> near = index.within(target[i], radius);
+    index.within(target[i], radius, near);
     if (near.size() < 3) continue;
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     for (std::size_t j : near) mean += target[j];

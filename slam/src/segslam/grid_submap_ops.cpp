@@ -41,40 +41,16 @@ Points2 obstacle_points(const OccupancyGrid& map) {
   return out;
 }
 
-// Share of `points` (robot frame, already rotated by the heading) that land within the
-// distance-field radius of an obstacle when the robot stands at (x, y): a wide, smooth
-// score for a coarse grid of poses. The innermost loop of matching: no calls, no trig.
-double near_obstacle_share(const OccupancyGrid& map, double x, double y, const Points2& rotated) {
-  const double inv = 1.0 / map.resolution();
-  int near = 0;
-  for (const auto& p : rotated) {
-    const CellIndex cell{static_cast<int>(std::floor((x + p.x()) * inv)), static_cast<int>(std::floor((y + p.y()) * inv))};
-    if (map.dist2(cell) < GridTile::kFar) ++near;
+// likelihood.hit_ratio's count of hits (end points within its hit distance of an obstacle)
+// read from the candidate's hit field: the same cells (cell_at divides), bits for tiles.
+int hit_count(const NearField& hits, const Pose2& robot, const PreparedScan& scan) {
+  const double c = std::cos(robot.theta), s = std::sin(robot.theta), res = hits.resolution();
+  int n = 0;
+  for (std::size_t i = 0; i < scan.x.size(); ++i) {
+    n += hits.near(0, NearField::floor_int((robot.x + c * scan.x[i] - s * scan.y[i]) / res),
+                   NearField::floor_int((robot.y + s * scan.x[i] + c * scan.y[i]) / res));
   }
-  return rotated.empty() ? 0.0 : static_cast<double>(near) / static_cast<double>(rotated.size());
-}
-
-// The best pose of a grid around `centre` by near_obstacle_share (points rotated once per
-// heading).
-Pose2 coarse_grid_search(const OccupancyGrid& map, const Points2& points, const Pose2& centre, double radius,
-                         double step, double angle, double angle_step) {
-  const int n = static_cast<int>(radius / step), na = static_cast<int>(angle / angle_step);
-  Pose2 best = centre;
-  double best_score = -1.0;
-  Points2 rotated(points.size());
-  for (int a = -na; a <= na; ++a) {
-    const double th = normalize_angle(centre.theta + a * angle_step), c = std::cos(th), s = std::sin(th);
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      rotated[k] = {c * points[k].x() - s * points[k].y(), s * points[k].x() + c * points[k].y()};
-    }
-    for (int i = -n; i <= n; ++i) {
-      for (int j = -n; j <= n; ++j) {
-        const double v = near_obstacle_share(map, centre.x + i * step, centre.y + j * step, rotated);
-        if (v > best_score) best_score = v, best = {centre.x + i * step, centre.y + j * step, th};
-      }
-    }
-  }
-  return best;
+  return n;
 }
 
 // Exhaustive search of a pose grid around `centre` for the best score.
@@ -82,12 +58,12 @@ template <typename Score>
 Pose2 grid_search(const Pose2& centre, double radius, double step, double angle, double angle_step, Score&& score) {
   const int n = static_cast<int>(radius / step), na = static_cast<int>(angle / angle_step);
   Pose2 best = centre;
-  double best_score = score(centre);
+  auto best_score = score(centre);
   for (int a = -na; a <= na; ++a) {
     for (int i = -n; i <= n; ++i) {
       for (int j = -n; j <= n; ++j) {
         const Pose2 p{centre.x + i * step, centre.y + j * step, normalize_angle(centre.theta + a * angle_step)};
-        const double v = score(p);
+        const auto v = score(p);
         if (v > best_score) best_score = v, best = p;
       }
     }
@@ -96,20 +72,20 @@ Pose2 grid_search(const Pose2& centre, double radius, double step, double angle,
 }
 
 // The pose near `guess` where most window points land on the candidate's obstacles: a coarse
-// grid on a thinned cloud scored by the wide near-obstacle share, then a fine grid scored by
-// hits within the sensor model's hit distance.
-Pose2 coarse_search(const OccupancyGrid& map, const Points2& cloud, const Pose2& guess,
-                    const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
+// grid on a thinned cloud scored by the wide near-obstacle share (branch and bound, the same
+// optimum as trying every pose), then a fine grid scored by hits within the sensor model's
+// hit distance.
+Pose2 coarse_search(const OccupancyGrid& map, const GridMatchTarget& target, const Points2& cloud, const Pose2& guess,
+                    const MatchingOptions& o) {
   Points2 thin;
   const std::size_t every = std::max<std::size_t>(1, cloud.size() / 60);
   for (std::size_t i = 0; i < cloud.size(); i += every) thin.push_back(cloud[i]);
-  // The near-obstacle share is flat within the field radius: steps of most of it miss no peak.
-  const double step = std::max(0.8 * map.distance_radius_cells() * map.resolution(), o.bin_size);
-  const Pose2 coarse = coarse_grid_search(map, thin, guess, o.search_radius, step, o.search_angle, 0.05);
+  const PoseGrid grid = coarse_pose_grid(map, o);
+  const Pose2 coarse = coarse_search_branch_and_bound(target.near, thin, guess, grid).pose;
   const PreparedScan scan = as_scan(cloud);
   // Half the coarse step around its best pose, on a grid ICP converges from (5 x 5 x 5).
-  return grid_search(coarse, step / 2, step / 4, 0.025, 0.0125,
-                     [&](const Pose2& p) { return likelihood.hit_ratio(map, p, scan); });
+  return grid_search(coarse, grid.step / 2, grid.step / 4, 0.025, 0.0125,
+                     [&](const Pose2& p) { return hit_count(target.hits, p, scan); });
 }
 
 }  // namespace
@@ -138,12 +114,23 @@ IcpTarget icp_target_of(const OccupancyGrid& map, const MatchingOptions& o) {
   return IcpTarget(bin_points(obstacle_points(map), o.bin_size), {o.icp_iterations, o.icp_max_distance, o.bin_size});
 }
 
-WindowMatch match_window(const OccupancyGrid& candidate, const IcpTarget& target, const LookaheadWindow& window,
-                         const Pose2& guess, const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
+PoseGrid coarse_pose_grid(const OccupancyGrid& map, const MatchingOptions& o) {
+  // The near-obstacle share is flat within the field radius: steps of most of it miss no peak.
+  const double step = std::max(0.8 * map.distance_radius_cells() * map.resolution(), o.bin_size);
+  return {o.search_radius, step, o.search_angle, 0.05};
+}
+
+GridMatchTarget match_target_of(const OccupancyGrid& map, const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
+  return {NearField(map, GridTile::kFar - 1, branch_and_bound_dilations(coarse_pose_grid(map, o), map.resolution())),
+          NearField(map, likelihood.hit_dist2()), icp_target_of(map, o)};
+}
+
+WindowMatch match_window(const OccupancyGrid& candidate, const GridMatchTarget& target, const LookaheadWindow& window,
+                         const Pose2& guess, const MatchingOptions& o) {
   WindowMatch m;
-  if (target.size() < 10 || window.cloud.size() < 10) return m;
-  const Pose2 seed = coarse_search(candidate, window.cloud, guess, o, likelihood);
-  const IcpResult icp = icp_binned(window.cloud, target, seed, {o.icp_iterations, o.icp_max_distance, o.bin_size});
+  if (target.icp.size() < 10 || window.cloud.size() < 10) return m;
+  const Pose2 seed = coarse_search(candidate, target, window.cloud, guess, o);
+  const IcpResult icp = icp_binned(window.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance, o.bin_size});
   m.pose = icp.transform;
   m.icp_error = icp.mean_error;
   m.translation = std::hypot(m.pose.x - guess.x, m.pose.y - guess.y);

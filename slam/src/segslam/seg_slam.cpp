@@ -188,18 +188,18 @@ WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, con
     // Searched from the rounded guess, so the result does not depend on which particle asked
     // first (determinism under threads).
     const Pose2 rounded{std::get<1>(key) * kGuessStep, std::get<2>(key) * kGuessStep, normalize_angle(std::get<3>(key) * 0.1)};
-    std::shared_ptr<const IcpTarget> target;
+    std::shared_ptr<const GridMatchTarget> target;
     {
       const std::lock_guard<std::mutex> lock(cache_mutex_);
-      target = icp_targets_[candidate];
+      target = match_targets_[candidate];
     }
-    if (!target) target = std::make_shared<const IcpTarget>(icp_target_of(segmap_.at(candidate).map, options_.matching));
+    if (!target) target = std::make_shared<const GridMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.matching, likelihood_));
     m = options_.matching.use_localization_filter
             ? localize_window(segmap_.at(candidate).map, w, rounded, options_.matching, likelihood_,
                               localization_seed(key))
-            : match_window(segmap_.at(candidate).map, *target, w, rounded, options_.matching, likelihood_);
+            : match_window(segmap_.at(candidate).map, *target, w, rounded, options_.matching);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
-    icp_targets_[candidate] = target;
+    match_targets_[candidate] = target;
     match_cache_.emplace(key, m);
     ++stats_.match_attempts;
   }
@@ -306,8 +306,8 @@ void SegSlam::update(std::size_t k) {
     std::vector<std::size_t> roots;
     for (const SegParticle& p : particles_) roots.push_back(p.submap.predecessor), roots.push_back(p.submap.parent);
     stats_.pruned += segmap_.prune(roots);
-    for (auto it = icp_targets_.begin(); it != icp_targets_.end();) {
-      it = segmap_.contains(it->first) ? std::next(it) : icp_targets_.erase(it);
+    for (auto it = match_targets_.begin(); it != match_targets_.end();) {
+      it = segmap_.contains(it->first) ? std::next(it) : match_targets_.erase(it);
     }
   }
 }
@@ -328,7 +328,7 @@ void SegSlam::store_closed(SegParticle& p, Transition& t) {
   if (!options_.locking.merge || parent == kNoSubmap || t.closed_entry_error > options_.locking.merge_max_error) return;
   if (segmap_.merge_into_parent(id, add_child_evidence)) {
     ++stats_.merged;
-    icp_targets_.erase(parent);  // its map changed
+    match_targets_.erase(parent);  // its map changed
   }
 }
 

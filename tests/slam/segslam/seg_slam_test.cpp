@@ -157,7 +157,7 @@ TEST(SegSlam, BothMatchersRecoverTheWindowPose) {
   const LikelihoodFieldModel likelihood(lo, map);
   MatchingOptions o;
   const Pose2 guess{4.3, 1.25, 0.1};
-  const WindowMatch icp = match_window(map, icp_target_of(map, o), w, guess, o, likelihood);
+  const WindowMatch icp = match_window(map, match_target_of(map, o, likelihood), w, guess, o);
   const WindowMatch loc = localize_window(map, w, guess, o, likelihood, 3);
   for (const WindowMatch& m : {icp, loc}) {
     EXPECT_TRUE(m.ok);

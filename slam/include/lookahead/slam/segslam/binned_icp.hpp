@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Point-to-line ICP on binned 2D point clouds (Fairfield et al. 2010, sec. 4.5: "ICP on the
 // octree-binned point clouds ... reduces the influence of point density"; here the bins are
-// the cells of a square grid). Nearest neighbours come from a hash of the target's bins.
+// the cells of a square grid). Nearest neighbours come from a dense grid of the target's bins.
 #pragma once
 
 #include <memory>
@@ -31,7 +31,7 @@ struct IcpOptions {
   double bin = 0.1;           ///< the clouds' bin size (the neighbour search cell) [m]
 };
 
-/// A target cloud prepared once for many alignments: its points hashed by bin and the wall
+/// A target cloud prepared once for many alignments: its points sorted into bins and the wall
 /// normal at each (a closed submap never changes, so SegSLAM prepares it once).
 class IcpTarget {
  public:

@@ -18,6 +18,8 @@
 #include "lookahead/slam/grid/occupancy_grid.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/segslam/binned_icp.hpp"
+#include "lookahead/slam/segslam/coarse_search.hpp"
+#include "lookahead/slam/segslam/near_field.hpp"
 #include "lookahead/slam/segslam/segslam_options.hpp"
 #include "lookahead/slam/sensor/likelihood_field_model.hpp"
 
@@ -52,12 +54,26 @@ struct WindowMatch {
 /// The ICP target of a submap: its obstacle cells, binned ("octree-binned point clouds").
 IcpTarget icp_target_of(const OccupancyGrid& map, const MatchingOptions& options);
 
-/// Sec. 4.5: matches the window onto `candidate` (whose ICP target is `target`) from `guess` (the robot in the candidate's
+/// The coarse search's pose grid on `map`: +-search_radius in steps of most of the distance
+/// field's radius, +-search_angle in 0.05 rad.
+PoseGrid coarse_pose_grid(const OccupancyGrid& map, const MatchingOptions& options);
+
+/// What matching needs of a closed submap, built once per candidate: its near-obstacle field
+/// with the coarse search's bounds, its hit field (likelihood.hit_ratio's hits, for the fine
+/// search), and its ICP target.
+struct GridMatchTarget {
+  NearField near;
+  NearField hits;
+  IcpTarget icp;
+};
+GridMatchTarget match_target_of(const OccupancyGrid& map, const MatchingOptions& options,
+                                const LikelihoodFieldModel& likelihood);
+
+/// Sec. 4.5: matches the window onto `candidate` (prepared as `target`) from `guess` (the robot in the candidate's
 /// frame as the map sample places it): a coarse search on the candidate's distance field
 /// seeds ICP on binned points; the result is weighted by eq. 18.
-WindowMatch match_window(const OccupancyGrid& candidate, const IcpTarget& target,
-                         const LookaheadWindow& window, const Pose2& guess, const MatchingOptions& options,
-                         const LikelihoodFieldModel& likelihood);
+WindowMatch match_window(const OccupancyGrid& candidate, const GridMatchTarget& target,
+                         const LookaheadWindow& window, const Pose2& guess, const MatchingOptions& options);
 
 /// Sec. 4.5.2, eq. 19: matches the window onto `candidate` with a separate localisation
 /// particle filter started around `guess` (spread over the coarse-search extent) and run over

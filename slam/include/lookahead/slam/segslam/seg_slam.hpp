@@ -125,7 +125,7 @@ class SegSlam {
   SegSlamStatistics stats_;
   std::mutex cache_mutex_;
   /// ICP targets of closed submaps (immutable once closed), prepared on first use.
-  std::map<std::size_t, std::shared_ptr<const IcpTarget>> icp_targets_;
+  std::map<std::size_t, std::shared_ptr<const GridMatchTarget>> match_targets_;
   std::map<std::tuple<std::size_t, long, long, long>, WindowMatch> match_cache_;
 };
 

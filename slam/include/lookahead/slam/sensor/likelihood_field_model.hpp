@@ -48,6 +48,8 @@ class LikelihoodFieldModel {
   [[nodiscard]] double end_point_log_likelihood(const OccupancyGrid& grid, double wx, double wy,
                                                 bool& hit) const;
   [[nodiscard]] const LikelihoodOptions& options() const { return options_; }
+  /// Squared cell distance up to which hit_ratio counts an end point as a hit [cells^2].
+  [[nodiscard]] int hit_dist2() const { return hit_dist2_; }
 
  private:
   LikelihoodOptions options_;
