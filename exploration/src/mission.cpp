@@ -34,6 +34,11 @@ constexpr double kRetireRadius = 1.0;
 // from where it stands (2 s at 10 Hz): the stop found something the path does not avoid.
 constexpr int kStopsBeforeReplan = 20;
 
+// Tracking of a backtrack along the trail: look-ahead [m] and heading error that stops
+// forward motion [rad].
+constexpr double kBacktrackLookahead = 0.15;
+constexpr double kBacktrackRotateAngle = 0.3;
+
 MissionOptions checked(MissionOptions o) {
   o.validate();
   // The predictive strategy and a filter that uses hypotheses both need predictions made.
@@ -312,7 +317,13 @@ bool Mission::backtrack() {
                 s.goal_x, s.goal_y);
   backtracking_ = true;
   goal_ = planner::Point2{s.goal_x, s.goal_y};
-  follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
+  // The trail fits where the robot drove it, not beside it: a door the margin closed may
+  // leave the body a few cm, so the trail is tracked closely (a short look-ahead cuts
+  // less) and the robot turns on the spot sooner rather than sweep a jamb into its stop.
+  planner::FollowerOptions close = options_.follower;
+  close.lookahead = std::min(close.lookahead, kBacktrackLookahead);
+  close.rotate_in_place_angle = std::min(close.rotate_in_place_angle, kBacktrackRotateAngle);
+  follower_ = std::make_unique<planner::PathFollower>(s.path, close);
   const slam::Pose2 p = estimate();
   best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);
   last_progress_time_ = time_;
