@@ -56,6 +56,19 @@ TEST(FrontierDetector, CellsOneBeamCrossedDoNotHideTheFrontier) {
   for (const CellIndex c : d.cells()) EXPECT_EQ(c.x, 39);
 }
 
+// ...but an undecided cell deep inside the known map (a wall edge blurred by SLAM's pose
+// noise, or a single noisy beam) is no way into new space: no frontier around it.
+TEST(FrontierDetector, UndecidedCellsInsideTheKnownMapAreNoFrontier) {
+  OccupancyGrid g = open_room();
+  for (int x = 10; x <= 20; ++x) g.add_log_odds({x, 10}, -3 * g.fixed_miss());  // 11 cells: p = 0.5
+  ASSERT_GT(g.probability({15, 10}), FrontierOptions{}.free_threshold);
+  ASSERT_LT(g.probability({15, 10}), FrontierOptions{}.occupied_threshold);
+  FrontierDetector d;
+  d.rebuild(g);
+  EXPECT_EQ(d.cells().size(), 18u);  // the open side only
+  for (const CellIndex c : d.cells()) EXPECT_EQ(c.x, 39);
+}
+
 TEST(FrontierDetector, ClusterGoalIsFreeWithClearance) {
   const OccupancyGrid g = open_room();
   FrontierDetector d;
