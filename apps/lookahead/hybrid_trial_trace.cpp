@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
@@ -60,7 +61,7 @@ class TraceWriter {
   TraceWriter(const std::string& path, const SimulatedRun& run) : csv_(path), run_(run), origin_(run.start) {
     if (!csv_) throw std::runtime_error("cannot write " + path);
     csv_ << "step,t,true_x,true_y,true_theta,est_x,est_y,est_theta,nees,local_nees,origin_nees,trace,"
-            "fusions,local_features,associated,global_features,bad_features,worst_feature_nees,ess,"
+            "fusions,local_features,associated,fusion_nis,sigma_theta,origin_sigma_theta,global_features,bad_features,worst_feature_nees,ess,"
             "observations,true_detections\n";
   }
 
@@ -74,10 +75,11 @@ class TraceWriter {
     const PoseGaussian v = f.vehicle();
     const PoseGaussian origin{f.global_map().origin(), f.global_map().covariance().topLeftCorner<3, 3>()};
     const Pose2& e = v.mean;
-    csv_ << fmt::format("{},{:.1f},{:.3f},{:.3f},{:.4f},{:.3f},{:.3f},{:.4f},{:.3f},{:.3f},{:.3f},{:.5f},{},{},{},{},{},{:.1f},{:.1f},{},{}\n",
+    csv_ << fmt::format("{},{:.1f},{:.3f},{:.3f},{:.4f},{:.3f},{:.3f},{:.4f},{:.3f},{:.3f},{:.3f},{:.5f},{},{},{},{:.1f},{:.4f},{:.4f},{},{},{:.1f},{:.1f},{},{}\n",
                         i, s.t, s.truth.x, s.truth.y, s.truth.theta, e.x, e.y, e.theta, pose_nees(s.truth, v),
                         pose_nees(origin_.between(s.truth), f.front_end().vehicle()), pose_nees(origin_, origin),
                         v.covariance.trace(), fusions_, f.last_fusion().local_features, f.last_fusion().associated,
+                        f.last_fusion().fusion_nis, std::sqrt(v.covariance(2, 2)), std::sqrt(origin.covariance(2, 2)),
                         f.global_map().features(), score_.bad, score_.worst, front_end_ess(f.front_end()),
                         s.observations.size(), s.true_detections);
   }
