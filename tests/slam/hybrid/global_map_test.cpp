@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/hybrid/global_map.hpp"
+#include "lookahead/slam/hybrid/motion_step.hpp"
 
 #include <gtest/gtest.h>
 
