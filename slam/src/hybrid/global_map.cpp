@@ -56,16 +56,15 @@ PoseGaussian GlobalMap::compose(const PoseGaussian& local) const {
 
 // Sec. 4: x+ = [x-; g(v-, x_L)] with
 // P+ = [P-, P-_{:v} dg_v^T; dg_v P-_{v:}, dg_v P_vv dg_v^T + dg_z P_L dg_z^T].
-// Deviation (first-estimates Jacobian, Huang, Mourikis & Roumeliotis, ISER 2008): dg_v is
-// evaluated at v-'s first estimate, the value it had when the previous fusion augmented it
-// as the new vehicle pose, not at its value after that fusion's zero-noise constraints
-// moved it. v- sits in two linearised relations, as the end of the previous local map and
-// as the origin of this one; two different linearisation points make the global heading
-// look observable, and the EKF gains heading information no measurement gave. Measured
-// (`hybrid-sim --trial`, clutter 0.7/0.02): the global heading std fell from 0.026 to 0.008
-// rad around the loop while its error stayed at 0.05-0.07 rad, and 9 of the 14 failed
-// HYBRID trials fired at the fusion 20 steps before the rule. The mean still uses the
-// current estimate.
+// Option `first_estimate_jacobians` (off; beyond the paper, after the first-estimates
+// Jacobian of Huang, Mourikis & Roumeliotis, ISER 2008): dg_v at v-'s first estimate, the
+// value the previous fusion augmented it with, instead of its value after that fusion's
+// zero-noise constraints moved it. v- sits in two linearised relations (end of the previous
+// local map, origin of this one), and two linearisation points can give the EKF heading
+// information no measurement gave: in the failed trials of the (0.7, 0.02) study the global
+// heading std fell from 0.026 to 0.008 rad around the loop while the error stayed at
+// 0.05-0.07 rad. It rescued 6 of those 14 failures but broke others; over Table 1 it was
+// no better (HYBRID 86/88/88/84 % against 92/86/89/86 %, README), so it is off.
 void GlobalMap::augment(const GaussianMap& local) {
   LocalToGlobal g = local_to_global(origin(), local.mean);
   g.d_origin = local_to_global(linearisation_origin(), local.mean).d_origin;

@@ -63,8 +63,8 @@ struct FusionOptions {
   double association_sigma = 0.15;
   int jcbb_max_nodes = 20000;     ///< cap on the branch-and-bound search
   /// Linearise g at the origin's first estimate (its value when it entered the map), not at
-  /// its value after the fusion corrected it (see global_map.cpp; false = as before).
-  bool first_estimate_jacobians = true;
+  /// its value after the fusion corrected it (see global_map.cpp). Off: measured no better.
+  bool first_estimate_jacobians = false;
 };
 
 /// Process noise every filter assumes at least, on top of the control's own model.
