@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 
 #include "commands.hpp"
 #include "hybrid_pictures.hpp"
+#include "hybrid_trial_trace.hpp"
 #include "lookahead/exploration/line_plot.hpp"
 #include "lookahead/slam/hybrid/hybrid_config.hpp"
 #include "lookahead/slam/hybrid/study.hpp"
@@ -29,6 +31,8 @@ struct HybridSimArgs {
   int trials = -1;
   int threads = -1;
   int particles = -1;
+  int trial = -1;
+  std::vector<std::string> filters;
   bool dump_config = false;
   bool no_study = false;
   bool no_figures = false;
@@ -131,6 +135,16 @@ nlohmann::json figures(const HybridConfig& c, const std::string& out) {
   return j;
 }
 
+std::vector<FilterKind> filters_named(const std::vector<std::string>& names) {
+  std::vector<FilterKind> out;
+  for (const std::string& name : names) {
+    const auto* it = std::find_if(std::begin(kAllFilters), std::end(kAllFilters), [&](FilterKind k) { return filter_name(k) == name; });
+    if (it == std::end(kAllFilters)) throw std::invalid_argument("--filters: unknown filter '" + name + "' (FASTSLAM, EKF, HYBRID, HYBRID-ADAPTIVE)");
+    out.push_back(*it);
+  }
+  return out;
+}
+
 std::string percent(const StudyCell& c) { return fmt::format("{:.0f}%", 100.0 * c.successes / c.trials); }
 
 void write_table(const std::string& out, const StudyResult& r, const HybridConfig& c) {
@@ -171,12 +185,18 @@ int run_hybrid_sim(const HybridSimArgs& a) {
     return 0;
   }
   std::filesystem::create_directories(a.out);
+  if (a.trial >= 0) {
+    const auto kinds = a.filters.empty() ? std::vector<FilterKind>{FilterKind::kEkf, FilterKind::kHybrid} : filters_named(a.filters);
+    for (const std::string& line : write_trial_traces(c, a.trial, kinds, a.out)) fmt::print("{}\n", line);
+    return 0;
+  }
   nlohmann::json j;
   j["parameters_yaml"] = dump_hybrid_config(c);
   if (!a.no_figures) j["figure_runs"] = figures(c, a.out);
   if (!a.no_study) {
     std::vector<FilterKind> filters = {FilterKind::kFastSlam, FilterKind::kEkf, FilterKind::kHybrid};
     if (!a.no_adaptive) filters.push_back(FilterKind::kHybridAdaptive);
+    if (!a.filters.empty()) filters = filters_named(a.filters);
     ProgressBar bar("hybrid-sim", static_cast<std::size_t>(c.study.trials) * c.study.alphas.size());
     const auto start = std::chrono::steady_clock::now();
     const StudyResult r = run_study(c.study, c.filter, c.simulation, filters,
@@ -188,7 +208,8 @@ int run_hybrid_sim(const HybridSimArgs& a) {
       j["study"].push_back({{"filter", filter_name(cell.filter)}, {"alpha", c.study.alphas[cell.level]},
                             {"beta", c.study.betas[cell.level]}, {"successes", cell.successes},
                             {"trials", cell.trials}, {"mean_trial_wall_s", cell.wall_s / cell.trials},
-                            {"mean_trial_simulated_s", cell.simulated_s / cell.trials}});
+                            {"mean_trial_simulated_s", cell.simulated_s / cell.trials},
+                            {"failed_trials_and_steps", cell.failures}});
     }
   }
   std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
@@ -205,6 +226,8 @@ Run add_hybrid_sim_command(CLI::App& app) {
   app.add_option("--trials", args->trials, "trials per filter and clutter level (default 100)");
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--particles", args->particles, "FastSLAM particles (default 500)");
+  app.add_option("--trial", args->trial, "re-run one trial of the first clutter level alone with a per-step trace (trialN_FILTER.csv)");
+  app.add_option("--filters", args->filters, "filters to run (FASTSLAM,EKF,HYBRID,HYBRID-ADAPTIVE)")->delimiter(',');
   app.add_flag("--dump-config", args->dump_config, "print every option with its default (YAML)");
   app.add_flag("--no-study", args->no_study, "only the figures and the speed run");
   app.add_flag("--no-figures", args->no_figures, "only Table 1");

@@ -30,7 +30,7 @@ LogMappingOptions options_from(const SlamHybridArgs& a) {
   if (!a.config.empty()) {
     HybridConfig base;
     base.filter = o.filter;
-    const HybridConfig c = load_hybrid_config(a.config, base);
+    const HybridConfig c = load_hybrid_log_config(a.config, base);
     o.filter = c.filter;
     o.landmarks = c.scan_landmarks;
     // Missed detections count inside the range the landmarks are extracted from.

@@ -46,6 +46,7 @@ void visit_sections(HybridConfig& c, V&& v) {
   v("jcbb_confidence", f.fusion.jcbb_confidence, "joint compatibility test level");
   v("jcbb_max_nodes", f.fusion.jcbb_max_nodes, "cap on the JCBB search");
   v("association_sigma", f.fusion.association_sigma, "std added to pair differences in the association test [m]");
+  v("first_estimate_jacobians", f.fusion.first_estimate_jacobians, "linearise g at the origin's first estimate (tried; README)");
   SimulationOptions& s = c.simulation;
   v.section("simulation");
   v("world_size", s.world_size, "side of the square world [m]");
@@ -112,6 +113,25 @@ HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& sou
 
 HybridConfig load_hybrid_config(const std::string& path, const HybridConfig& base) {
   return parse_hybrid_config(slam::config::read_text_file(path), path, base);
+}
+
+// On logs only the filter and scan_landmarks sections apply, on top of the log-mode
+// defaults (100 particles, alpha 0.5, beta 0.1, ...). A file with the simulation's sections
+// is a simulation file (config/hybrid/default.yaml lists every key): its filter values
+// would silently replace the log-mode ones, so it is refused, naming the section's line.
+HybridConfig load_hybrid_log_config(const std::string& path, const HybridConfig& base) {
+  const std::string text = slam::config::read_text_file(path);
+  const YAML::Node root = slam::config::parse_sections(text, path);
+  if (root.IsMap()) {
+    for (const auto& section : root) {
+      const std::string name = section.first.as<std::string>();
+      if (name != "simulation" && name != "study") continue;
+      throw ParseError(path, section.first.Mark().line + 1, name, "",
+                       "a hybrid-sim section in a log config: its file's filter values would replace the "
+                       "log-mode defaults; give only the keys to change (e.g. config/hybrid/csail.yaml)");
+    }
+  }
+  return parse_hybrid_config(text, path, base);
 }
 
 std::string dump_hybrid_config(const HybridConfig& config) {

@@ -61,10 +61,11 @@ StudyResult run_study(const StudyOptions& study, const HybridOptions& filter, co
   result.filters = filters;
   for (std::size_t f = 0; f < filters.size(); ++f) {
     for (std::size_t level = 0; level < levels; ++level) {
-      StudyCell c{filters[f], level, 0, 0, 0.0, 0.0};
+      StudyCell c{filters[f], level, 0, 0, 0.0, 0.0, {}};
       for (int trial = 0; trial < study.trials; ++trial) {
         const TrialResult& r = outcome[level * static_cast<std::size_t>(study.trials) + static_cast<std::size_t>(trial)][f];
         c.successes += r.success ? 1 : 0;
+        if (!r.success) c.failures.emplace_back(trial, r.failed_at);
         c.trials += 1;
         c.wall_s += r.wall_s;
         c.simulated_s += r.simulated_s;

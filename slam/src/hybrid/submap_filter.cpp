@@ -38,7 +38,8 @@ bool SubmapFilter::fusion_due() {
 
 void SubmapFilter::fuse_now() {
   const GaussianMap local = front_->to_gaussian(options_.existence.fuse_threshold);
-  associated_ += global_.fuse(local).associated;
+  last_report_ = global_.fuse(local);
+  associated_ += last_report_.associated;
   front_->restart();
   age_ = 0.0;
   delaying_ = false;

@@ -40,7 +40,8 @@ double pose_nees(const Pose2& truth, const PoseGaussian& estimate) {
 }
 
 TrialResult run_trial(FilterKind kind, const SimulatedRun& run, const HybridOptions& options,
-                      std::uint64_t seed, const FailureRule& rule, bool stop_at_failure) {
+                      std::uint64_t seed, const FailureRule& rule, bool stop_at_failure,
+                      const StepObserver& observer) {
   const auto start = std::chrono::steady_clock::now();
   auto filter = make_filter(kind, options, run.start, seed);
   TrialResult r;
@@ -49,6 +50,7 @@ TrialResult run_trial(FilterKind kind, const SimulatedRun& run, const HybridOpti
   for (std::size_t i = 0; i < run.steps.size(); ++i) {
     const SimulatedStep& s = run.steps[i];
     filter->step(s.control, s.observations);
+    if (observer) observer(i, *filter);
     const PoseGaussian v = filter->vehicle();
     const double d2 = pose_nees(s.truth, v);
     r.trace.push_back(v.covariance.trace());

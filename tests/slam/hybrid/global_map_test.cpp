@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/hybrid/global_map.hpp"
+#include "lookahead/slam/hybrid/motion_step.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace lookahead::slam::hybrid {
@@ -62,6 +64,52 @@ TEST(GlobalMapAugmentation, CovarianceFollowsThePaper) {
   EXPECT_LT((g.covariance().bottomRightCorner(5, 5) - expected_new).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_LT((g.covariance().bottomLeftCorner(5, 3) - lg.d_origin * p0).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_LT((g.mean().tail(5) - lg.value).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// First-estimates Jacobian: a fusion corrects the new vehicle pose (the next origin) through
+// a re-observed feature; the next augmentation must linearise g at the origin as it was
+// augmented, not at the corrected value (global_map.cpp explains why).
+GaussianMap local_map(const Eigen::Vector3d& vehicle, const Eigen::Vector2d& feature) {
+  GaussianMap m;
+  m.mean = Eigen::VectorXd(5);
+  m.mean << vehicle, feature;
+  m.covariance = Eigen::MatrixXd::Identity(5, 5) * 0.01;
+  m.covariance(2, 2) = 0.003;
+  m.ids = {0};
+  m.existence = {1.0};
+  return m;
+}
+
+TEST(GlobalMapAugmentation, LinearisesAtTheOriginsFirstEstimate) {
+  for (bool first_estimate : {true, false}) {
+    FusionOptions o;
+    o.first_estimate_jacobians = first_estimate;
+    GlobalMap g(o, {1.0, 2.0, 0.5});
+    g.fuse(local_map({3.0, 0.0, 0.2}, {5.0, 2.0}));
+    ASSERT_EQ(g.features(), 1u);
+    // The feature seen again from the new origin, 12 cm off: it associates, and the
+    // zero-noise fusion moves the new vehicle pose.
+    const Pose2 v1 = g.origin();
+    const Pose2 f = v1.inverse().compose({g.feature(0).x(), g.feature(0).y(), 0.0});
+    const GaussianMap second = local_map({2.0, 0.5, 0.1}, {f.x + 0.1, f.y - 0.07});
+    const Pose2 augmented = to_pose(local_to_global(v1, second.mean).value.head<3>());
+    ASSERT_EQ(g.fuse(second).associated, 1);
+    ASSERT_GT(std::abs(normalize_angle(g.origin().theta - augmented.theta)), 1e-3) << "the fusion must move the origin";
+    const Pose2 expected = first_estimate ? augmented : g.origin();
+    EXPECT_NEAR(g.linearisation_origin().x, expected.x, 1e-12);
+    EXPECT_NEAR(g.linearisation_origin().theta, expected.theta, 1e-12);
+
+    const Eigen::MatrixXd p0 = g.covariance();
+    const GaussianMap third = local_map({1.0, 1.0, 0.1}, {4.0, -2.0});
+    g.augment(third);
+    const LocalToGlobal at_expected = local_to_global(expected, third.mean);
+    const LocalToGlobal at_other = local_to_global(first_estimate ? g.origin() : augmented, third.mean);
+    const Eigen::MatrixXd cross = g.covariance().bottomLeftCorner(5, p0.cols());
+    EXPECT_LT((cross - at_expected.d_origin * p0.topRows(3)).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_GT((cross - at_other.d_origin * p0.topRows(3)).cwiseAbs().maxCoeff(), 1e-4);
+    // The mean is still g at the current estimate.
+    EXPECT_LT((g.mean().tail(5) - local_to_global(g.origin(), third.mean).value).cwiseAbs().maxCoeff(), 1e-12);
+  }
 }
 
 // Eq. (10): after the zero-noise difference observation the two copies are one feature,

@@ -31,6 +31,30 @@ TEST(HybridConfig, ShippedDefaultsMatchTheCode) {
       << "regenerate with: lookahead hybrid-sim --dump-config > config/hybrid/default.yaml";
 }
 
+// `slam --method hybrid --config config/hybrid/default.yaml` used to replace the log-mode
+// defaults (100 particles, alpha 0.5, beta 0.1) with the simulation's values: a log
+// config with simulation sections is refused at the section's line; a log config that
+// gives only the keys to change keeps the log-mode defaults for the rest.
+TEST(HybridConfig, LogConfigRefusesTheSimulationFileAndKeepsLogDefaults) {
+  const std::string dir = std::string(LOOKAHEAD_SOURCE_DIR) + "/config/hybrid/";
+  HybridConfig log_base;
+  log_base.filter.fastslam.particles = 100;
+  log_base.filter.existence.alpha = 0.5;
+  log_base.filter.existence.beta = 0.1;
+  try {
+    load_hybrid_log_config(dir + "default.yaml", log_base);
+    FAIL() << "the simulation defaults were accepted on a log";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), dir + "default.yaml");
+    EXPECT_EQ(e.field(), "simulation");
+    EXPECT_GT(e.line(), 30u);
+  }
+  const HybridConfig csail = load_hybrid_log_config(dir + "csail.yaml", log_base);
+  EXPECT_EQ(csail.filter.fastslam.particles, 100);
+  EXPECT_DOUBLE_EQ(csail.filter.existence.alpha, 0.5);
+  EXPECT_DOUBLE_EQ(csail.scan_landmarks.split_tolerance, 0.12);
+}
+
 TEST(HybridConfig, BadInputNamesFileLineKeyAndValue) {
   try {
     parse_hybrid_config("fusion:\n  period: 10\n  perod: 5\n", "h.yaml");

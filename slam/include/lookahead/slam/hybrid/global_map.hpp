@@ -20,6 +20,9 @@ namespace lookahead::slam::hybrid {
 struct FusionReport {
   int local_features = 0;  ///< features offered by the local map
   int associated = 0;      ///< of them, fused with a global feature
+  /// Joint NIS of the fused pairs' differences (zero-noise, as fused): chi^2 with
+  /// 2 * associated dof when both maps are consistent (a diagnostic).
+  double fusion_nis = 0.0;
   bool search_truncated = false;
 };
 
@@ -41,17 +44,24 @@ class GlobalMap {
   [[nodiscard]] const Eigen::VectorXd& mean() const { return mean_; }
   [[nodiscard]] const Eigen::MatrixXd& covariance() const { return covariance_; }
 
+  /// The point at which the next augmentation linearises g in v- (see global_map.cpp).
+  [[nodiscard]] Pose2 linearisation_origin() const;
+
   /// Steps 1 and 4 alone, exposed for tests: the state after augmentation by g.
   void augment(const GaussianMap& local);
 
  private:
   std::vector<int> associate(std::size_t first_new, std::size_t count, FusionReport& report) const;
-  void fuse_pairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
+  /// Returns the joint NIS of the pairs.
+  double fuse_pairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
   void remove_states(std::vector<Eigen::Index> indices);
 
   FusionOptions options_;
   Eigen::VectorXd mean_;
   Eigen::MatrixXd covariance_;
+  /// The origin v- as it entered the map (augmented, before its fusion corrected it): the
+  /// point at which g is linearised when `first_estimate_jacobians` is set.
+  Pose2 first_origin_;
 };
 
 /// g(v, x_L): the local state [v_L, m_1 ... m_K] expressed in the global frame, and its

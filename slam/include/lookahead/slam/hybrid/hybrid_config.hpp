@@ -22,6 +22,9 @@ struct HybridConfig {
 };
 
 HybridConfig load_hybrid_config(const std::string& path, const HybridConfig& base = {});
+/// For `slam --method hybrid`: as load_hybrid_config, but a file with a `simulation` or
+/// `study` section (a hybrid-sim file) is refused with its file and line.
+HybridConfig load_hybrid_log_config(const std::string& path, const HybridConfig& base);
 HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& source, const HybridConfig& base = {});
 /// Every option with its default and unit (`lookahead hybrid-sim --dump-config`).
 std::string dump_hybrid_config(const HybridConfig& config);

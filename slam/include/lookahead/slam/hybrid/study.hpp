@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "lookahead/slam/hybrid/simulation.hpp"
@@ -33,6 +34,9 @@ struct StudyCell {
   int trials = 0;
   double wall_s = 0.0;         ///< summed over trials
   double simulated_s = 0.0;    ///< summed over trials
+  /// The failed trials (index within the level) and the step at which the rule fired, so a
+  /// failure can be re-run alone (`hybrid-sim --trial`).
+  std::vector<std::pair<int, int>> failures;
 };
 
 struct StudyResult {

@@ -41,6 +41,7 @@ class SubmapFilter {
   [[nodiscard]] int fusions() const { return fusions_; }
   [[nodiscard]] int delayed_fusions() const { return delayed_; }
   [[nodiscard]] int associated_at_fusion() const { return associated_; }
+  [[nodiscard]] const FusionReport& last_fusion() const { return last_report_; }
 
  private:
   [[nodiscard]] bool fusion_due();
@@ -53,6 +54,7 @@ class SubmapFilter {
   double age_ = 0.0;  ///< seconds since the local map started
   int fusions_ = 0, delayed_ = 0, associated_ = 0;
   bool delaying_ = false;
+  FusionReport last_report_;
 };
 
 }  // namespace lookahead::slam::hybrid

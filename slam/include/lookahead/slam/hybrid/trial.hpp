@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,9 +43,13 @@ struct TrialResult {
 std::unique_ptr<SubmapFilter> make_filter(FilterKind kind, const HybridOptions& options,
                                           const Pose2& start, std::uint64_t seed);
 
+/// Called after every step with the step index and the filter (diagnostic traces).
+using StepObserver = std::function<void(std::size_t step, const SubmapFilter& filter)>;
+
 /// Runs the whole trial; `stop_at_failure` ends it when the rule fires (studies).
 TrialResult run_trial(FilterKind kind, const SimulatedRun& run, const HybridOptions& options,
-                      std::uint64_t seed, const FailureRule& rule, bool stop_at_failure);
+                      std::uint64_t seed, const FailureRule& rule, bool stop_at_failure,
+                      const StepObserver& observer = {});
 
 /// (true - estimate)^T P^-1 (true - estimate), heading wrapped; a tiny floor on P's diagonal
 /// keeps an exactly known component (the compass heading) finite.
