@@ -30,6 +30,10 @@ namespace {
 // the goal lies at most goal_search_radius (1 m) from its cluster.
 constexpr double kRetireRadius = 1.0;
 
+// A frontier cluster whose goal lies this close to the current goal [m] is the one the
+// robot is driving to (the map grows on the way, so the goal shifts a little).
+constexpr double kSameGoalRadius = 1.0;
+
 // Steps the reactive stop may hold the robot before its path is given up and replanned
 // from where it stands (2 s at 10 Hz): the stop found something the path does not avoid.
 constexpr int kStopsBeforeReplan = 20;
@@ -232,7 +236,21 @@ bool Mission::need_new_path() {
     ++stats_.stuck_goals;
     return true;
   }
-  return !goal_still_useful();
+  return !goal_still_useful() || goal_predicted();
+}
+
+bool Mission::goal_predicted() const {
+  // Look-ahead mapping: a hypothesis delivered on the way (requested for this very target,
+  // so it arrives after the choice) may cover the frontier the robot is driving to. The
+  // strategy would skip it now; driving on would map what is already predicted.
+  if (!lookahead_ || !goal_ || !strategy_->uses_prediction()) return false;
+  const slam::OccupancyGrid& m = map();
+  for (const FrontierCluster& f : frontiers_.clusters(m)) {
+    if (!f.has_goal || std::hypot(f.goal_x - goal_->x, f.goal_y - goal_->y) > kSameGoalRadius) continue;
+    return lookahead_->predicted().predicted_share(m, f, options_.lookahead.skip_confidence) >=
+           options_.lookahead.skip_share;
+  }
+  return false;
 }
 
 SelectionInputs Mission::selection_inputs() {
