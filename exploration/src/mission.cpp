@@ -207,7 +207,14 @@ void Mission::decide() {
   if (!need_new_path()) return;
   // A blocked path is no reason to change the target: only a target that stopped being
   // worth it is. Re-choosing on every blocked path swaps between far frontiers.
-  if (path_blocked_ && goal_ && goal_still_useful() && replan_current_goal()) return;
+  if (path_blocked_ && goal_ && goal_still_useful()) {
+    if (replan_current_goal()) return;
+    // No way to the goal any more (it moved into the inflated band, or behind new walls):
+    // a failed goal, as a failed plan in a selection is. Without the entry the next
+    // selection may pick it again as soon as the map lets it (kth_50055641 nearest swapped
+    // between two such goals every 25 s for the last 1000 s of its mission).
+    if (!backtracking_) blacklist_.add(goal_->x, goal_->y, time_);
+  }
   select_new_target();
 }
 
