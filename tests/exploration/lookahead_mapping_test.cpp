@@ -96,7 +96,7 @@ TEST(LookaheadMission, PredictiveMazeRunChecksItsHypotheses) {
   MissionOptions o = MissionOptions::defaults();
   o.pose_source = PoseSource::kTruth;
   o.strategy = "predictive";
-  o.time_limit = 120;
+  o.time_limit = 240;  // long enough for a few hypotheses on every code path so far
   o.harmonize();
   Mission a(maze.world, maze.start, o);
   a.run();
