@@ -64,6 +64,7 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       meter_(world, reachable_, options.free_threshold),
       frontiers_(options.frontiers),
       blacklist_(options.blacklist),
+      replan_failures_(options.blacklist),
       strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)) {
   if (!reachable_.start_valid) throw std::invalid_argument("mission: the start pose is in collision");
   if (options_.lookahead.enabled) {
@@ -209,11 +210,15 @@ void Mission::decide() {
   // worth it is. Re-choosing on every blocked path swaps between far frontiers.
   if (path_blocked_ && goal_ && goal_still_useful()) {
     if (replan_current_goal()) return;
-    // No way to the goal any more (it moved into the inflated band, or behind new walls):
-    // a failed goal, as a failed plan in a selection is. Without the entry the next
-    // selection may pick it again as soon as the map lets it (kth_50055641 nearest swapped
-    // between two such goals every 25 s for the last 1000 s of its mission).
-    if (!backtracking_) blacklist_.add(goal_->x, goal_->y, time_);
+    // No way to the goal any more. The map often lets it back a moment later, and a new
+    // selection resets the stuck clock, so two such goals can take turns for good
+    // (kth_50055641 nearest swapped between two every 25 s for the last 1000 s of its
+    // mission). A spot whose replan fails a second time within the lifetime is a failed
+    // goal; once is not (blacklisting at the first failure cost kth_0510034869 its 95 %).
+    if (!backtracking_) {
+      if (replan_failures_.contains(goal_->x, goal_->y, time_)) blacklist_.add(goal_->x, goal_->y, time_);
+      else replan_failures_.add(goal_->x, goal_->y, time_);
+    }
   }
   select_new_target();
 }

@@ -115,6 +115,7 @@ class Mission {
   CoverageMeter meter_;
   FrontierDetector frontiers_;
   GoalBlacklist blacklist_;
+  GoalBlacklist replan_failures_;  ///< goals given up once because no replan reached them
   std::unique_ptr<TargetStrategy> strategy_;
   std::unique_ptr<LookaheadMapping> lookahead_;
   planner::Costmap costmap_;
