@@ -226,7 +226,8 @@ Run add_hybrid_sim_command(CLI::App& app) {
   app.add_option("--trials", args->trials, "trials per filter and clutter level (default 100)");
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--particles", args->particles, "FastSLAM particles (default 500)");
-  app.add_option("--trial", args->trial, "re-run one trial of the first clutter level alone with a per-step trace (trialN_FILTER.csv)");
+  app.add_option("--trial", args->trial, "re-run one trial of the first clutter level alone with a per-step trace (trialN_FILTER.csv)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--filters", args->filters, "filters to run (FASTSLAM,EKF,HYBRID,HYBRID-ADAPTIVE)")->delimiter(',');
   app.add_flag("--dump-config", args->dump_config, "print every option with its default (YAML)");
   app.add_flag("--no-study", args->no_study, "only the figures and the speed run");
