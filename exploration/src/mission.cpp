@@ -327,14 +327,9 @@ void Mission::select_new_target() {
     turned_ = 0.0;
   } else {
     unreachable_streak_ = 0;
-    goal_ = planner::Point2{s.goal_x, s.goal_y};
     // P-SLAM predicts the region around the next exploration goal (sec. II-A, step 1).
     if (lookahead_) lookahead_->request(map(), prediction_targets(s.goal_x, s.goal_y), time_);
-    follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
-    const slam::Pose2 p = estimate();
-    best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);
-    last_progress_time_ = time_;
-    next_goal_check_ = time_ + options_.goal_check_period;
+    follow(s, options_.follower);
   }
 }
 
@@ -346,19 +341,23 @@ bool Mission::backtrack() {
   spdlog::debug("t {:.1f}: no frontier reachable: backtrack {} crumbs to ({:.2f}, {:.2f})", time_, s.path.size() - 1,
                 s.goal_x, s.goal_y);
   backtracking_ = true;
-  goal_ = planner::Point2{s.goal_x, s.goal_y};
   // The trail fits where the robot drove it, not beside it: a door the margin closed may
   // leave the body a few cm, so the trail is tracked closely (a short look-ahead cuts
   // less) and the robot turns on the spot sooner rather than sweep a jamb into its stop.
   planner::FollowerOptions close = options_.follower;
   close.lookahead = std::min(close.lookahead, kBacktrackLookahead);
   close.rotate_in_place_angle = std::min(close.rotate_in_place_angle, kBacktrackRotateAngle);
-  follower_ = std::make_unique<planner::PathFollower>(s.path, close);
+  follow(s, close);
+  return true;
+}
+
+void Mission::follow(const Selection& s, const planner::FollowerOptions& tracking) {
+  goal_ = planner::Point2{s.goal_x, s.goal_y};
+  follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
   const slam::Pose2 p = estimate();
-  best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);
+  best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);  // the stuck clock starts
   last_progress_time_ = time_;
   next_goal_check_ = time_ + options_.goal_check_period;
-  return true;
 }
 
 void Mission::act() {
@@ -381,7 +380,10 @@ void Mission::act() {
   const StepResult r = robot_.step(cmd.v, cmd.omega, options_.laser.period());
   odometry_.update(before.between(r.pose));
   // Retraced crumbs were popped; dropping them again would lead the next backtrack back in.
-  if (!backtracking_) crumbs_.drop({estimate().x, estimate().y});
+  if (!backtracking_) {
+    const slam::Pose2 p = estimate();
+    crumbs_.drop({p.x, p.y});
+  }
   path_length_ += r.distance;
   turned_ += std::abs(r.turned);
   if (r.collided) {

@@ -9,6 +9,7 @@
 #include "lookahead/exploration/goal_blacklist.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
+#include "hand_made_grid.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -46,17 +47,9 @@ TEST(Breadcrumbs, BacktrackRetracesNewestFirstAndPopsWhatItRetraced) {
 // (0.3 m) door, which a 0.18 m inflation closes. The left room is mapped all round, the right
 // one is open on its far side: its frontier is unreachable from the left room.
 OccupancyGrid two_rooms() {
-  OccupancyGrid g;
-  const auto add = [&](int x0, int y0, int x1, int y1, int l) {
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) g.add_log_odds({x, y}, l);
-  };
-  add(0, 0, 81, 29, 3 * g.fixed_miss());
-  add(-1, -1, 82, -1, 3 * g.fixed_hit());
-  add(-1, 30, 82, 30, 3 * g.fixed_hit());
-  add(-1, -1, -1, 30, 3 * g.fixed_hit());
-  add(40, 0, 41, 13, 6 * g.fixed_hit());   // the wall below the door...
-  add(40, 20, 41, 29, 6 * g.fixed_hit());  // ...and above it (door: y cells 14-19)
+  OccupancyGrid g = testing::open_room(82, 30, 82);
+  testing::add_rect(g, 40, 0, 41, 13, 6 * g.fixed_hit());   // the wall below the door...
+  testing::add_rect(g, 40, 20, 41, 29, 6 * g.fixed_hit());  // ...and above it (door: y cells 14-19)
   return g;
 }
 

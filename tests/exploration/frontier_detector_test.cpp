@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "lookahead/exploration/goal_blacklist.hpp"
+#include "hand_made_grid.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -12,23 +13,14 @@ using slam::CellIndex;
 using slam::OccupancyGrid;
 
 void set_free(OccupancyGrid& g, int x0, int y0, int x1, int y1) {
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) g.add_log_odds({x, y}, 3 * g.fixed_miss());
+  testing::add_rect(g, x0, y0, x1, y1, 3 * g.fixed_miss());
 }
 void set_wall(OccupancyGrid& g, int x0, int y0, int x1, int y1) {
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) g.add_log_odds({x, y}, 3 * g.fixed_hit());
+  testing::add_rect(g, x0, y0, x1, y1, 3 * g.fixed_hit());
 }
 
 // A 40 x 20 cell room with walls, open on its right side: the frontier is that side.
-OccupancyGrid open_room() {
-  OccupancyGrid g;
-  set_free(g, 0, 0, 39, 19);
-  set_wall(g, -1, -1, 40, -1);
-  set_wall(g, -1, 20, 40, 20);
-  set_wall(g, -1, -1, -1, 20);
-  return g;
-}
+OccupancyGrid open_room() { return testing::open_room(40, 20, 40); }
 
 TEST(FrontierDetector, FreeCellsNextToUnknownAreFrontiers) {
   const OccupancyGrid g = open_room();

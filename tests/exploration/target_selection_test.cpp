@@ -7,6 +7,7 @@
 
 #include "lookahead/exploration/goal_blacklist.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
+#include "hand_made_grid.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -14,18 +15,7 @@ namespace {
 using slam::OccupancyGrid;
 
 // A 3 m x 1.5 m room (5 cm cells), walled except on its right side: one frontier there.
-OccupancyGrid open_room() {
-  OccupancyGrid g;
-  const auto add = [&](int x0, int y0, int x1, int y1, int l) {
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) g.add_log_odds({x, y}, l);
-  };
-  add(0, 0, 59, 29, 3 * g.fixed_miss());
-  add(-1, -1, 60, -1, 3 * g.fixed_hit());
-  add(-1, 30, 60, 30, 3 * g.fixed_hit());
-  add(-1, -1, -1, 30, 3 * g.fixed_hit());
-  return g;
-}
+OccupancyGrid open_room() { return testing::open_room(60, 30, 60); }
 
 struct Scene {
   OccupancyGrid map = open_room();

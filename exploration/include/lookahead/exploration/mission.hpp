@@ -100,6 +100,7 @@ class Mission {
   bool goal_still_useful() const;
   bool goal_predicted() const;  ///< look-ahead mapping covers the current target
   bool backtrack();  ///< follows the trail out of a place with no reachable frontier
+  void follow(const Selection& s, const planner::FollowerOptions& tracking);  ///< a new goal and path
   bool path_ahead_blocked(double v) const;
   void hold_or_replan();  ///< counts a reactive stop; gives the path up when it lasts
 
