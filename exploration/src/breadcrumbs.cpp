@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/breadcrumbs.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <queue>
 #include <stdexcept>
+#include <unordered_map>
+#include <utility>
 
 namespace lookahead::exploration {
 
@@ -15,14 +20,108 @@ void Breadcrumbs::drop(planner::Point2 p) {
   crumbs_.push_back(p);
 }
 
-planner::Path Breadcrumbs::backtrack(planner::Point2 from, const std::function<bool(planner::Point2)>& outside) {
+namespace {
+
+// Crumbs bucketed on a grid of kLinkRadius cells: the crumbs within the radius of a point
+// lie in its own bucket or the eight around it.
+class CrumbBuckets {
+ public:
+  explicit CrumbBuckets(const std::vector<planner::Point2>& crumbs) : crumbs_(crumbs) {
+    for (std::size_t i = 0; i < crumbs.size(); ++i) buckets_[key(crumbs[i])].push_back(i);
+  }
+
+  template <typename Visit>
+  void near(planner::Point2 p, Visit&& visit) const {
+    const auto [bx, by] = cell(p);
+    for (std::int64_t dy = -1; dy <= 1; ++dy)
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        const auto it = buckets_.find(pack(bx + dx, by + dy));
+        if (it == buckets_.end()) continue;
+        for (const std::size_t j : it->second) {
+          const planner::Point2 q = crumbs_[j];
+          if (std::hypot(q.x - p.x, q.y - p.y) <= Breadcrumbs::kLinkRadius) visit(j);
+        }
+      }
+  }
+
+ private:
+  static std::pair<std::int64_t, std::int64_t> cell(planner::Point2 p) {
+    return {static_cast<std::int64_t>(std::floor(p.x / Breadcrumbs::kLinkRadius)),
+            static_cast<std::int64_t>(std::floor(p.y / Breadcrumbs::kLinkRadius))};
+  }
+  static std::int64_t pack(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xffffffff); }
+  static std::int64_t key(planner::Point2 p) {
+    const auto [x, y] = cell(p);
+    return pack(x, y);
+  }
+
+  const std::vector<planner::Point2>& crumbs_;
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> buckets_;
+};
+
+}  // namespace
+
+planner::Path Breadcrumbs::backtrack(planner::Point2 from, const std::function<bool(planner::Point2)>& outside,
+                                     const Passable& passable) {
   std::size_t k = crumbs_.size();
   while (k > 0 && !outside(crumbs_[k - 1])) --k;
   if (k == 0) return {};
   planner::Path path{from};
-  for (std::size_t i = crumbs_.size(); i-- > k - 1;) path.push_back(crumbs_[i]);
+  for (const std::size_t i : shortest_way(way_in(from, passable), k - 1, passable)) path.push_back(crumbs_[i]);
   crumbs_.resize(k);  // the exit crumb stays: the trail goes on from there
   return path;
+}
+
+std::size_t Breadcrumbs::way_in(planner::Point2 from, const Passable& passable) const {
+  std::size_t best = crumbs_.size() - 1;
+  if (!passable) return best;
+  double best_d = INFINITY;
+  CrumbBuckets(crumbs_).near(from, [&](std::size_t j) {
+    const double d = planner::distance(crumbs_[j], from);
+    if (d < best_d && passable(from, crumbs_[j])) {
+      best_d = d;
+      best = j;
+    }
+  });
+  return best;
+}
+
+// Dijkstra over the crumbs: consecutive crumbs are joined (the robot drove between them),
+// crumbs of different passes where `passable` allows. Crumb indices from `from` to `to`.
+std::vector<std::size_t> Breadcrumbs::shortest_way(std::size_t from, std::size_t to, const Passable& passable) const {
+  const std::size_t n = crumbs_.size();
+  const std::optional<CrumbBuckets> buckets = passable ? std::optional<CrumbBuckets>(crumbs_) : std::nullopt;
+  std::vector<double> dist(n, INFINITY);
+  std::vector<std::size_t> parent(n, n);
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  dist[from] = 0.0;
+  open.push({0.0, from});
+  const auto relax = [&](std::size_t i, std::size_t j) {
+    const double d = dist[i] + planner::distance(crumbs_[i], crumbs_[j]);
+    if (d >= dist[j]) return;
+    dist[j] = d;
+    parent[j] = i;
+    open.push({d, j});
+  };
+  while (!open.empty()) {
+    const auto [d, i] = open.top();
+    open.pop();
+    if (i == to) break;
+    if (d > dist[i]) continue;
+    if (i > 0) relax(i, i - 1);
+    if (i + 1 < n) relax(i, i + 1);
+    if (!buckets) continue;
+    buckets->near(crumbs_[i], [&](std::size_t j) {
+      if (j + 1 != i && j != i + 1 && j != i && dist[i] + planner::distance(crumbs_[i], crumbs_[j]) < dist[j] &&
+          passable(crumbs_[i], crumbs_[j]))
+        relax(i, j);
+    });
+  }
+  std::vector<std::size_t> way;
+  for (std::size_t i = to; i != n; i = parent[i]) way.push_back(i);
+  std::reverse(way.begin(), way.end());
+  return way;
 }
 
 }  // namespace lookahead::exploration

@@ -32,6 +32,17 @@ std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, dou
 
 namespace {
 
+// No cell the segment a-b passes (sampled every quarter cell) is occupied in the map itself.
+bool segment_not_occupied(const slam::OccupancyGrid& map, planner::Point2 a, planner::Point2 b, double threshold) {
+  const double length = std::hypot(b.x - a.x, b.y - a.y);
+  const int steps = std::max(1, static_cast<int>(std::ceil(4.0 * length / map.resolution())));
+  for (int i = 0; i <= steps; ++i) {
+    const double t = static_cast<double>(i) / steps;
+    if (map.probability(map.cell_at(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y))) >= threshold) return false;
+  }
+  return true;
+}
+
 TravelCost travel_cost(const planner::Costmap& cm, const planner::Point2& start) {
   const slam::CellIndex lo = cm.origin();
   const slam::CellIndex hi{lo.x + cm.width() - 1, lo.y + cm.height() - 1};
@@ -194,7 +205,12 @@ Selection select_escape(const SelectionInputs& in, Breadcrumbs& crumbs) {
   const auto outside = [&](planner::Point2 p) {
     return cm.is_free(p) && !(place && place->reachable(cm.cell_at(p)));
   };
-  planner::Path path = crumbs.backtrack({in.pose.x, in.pose.y}, outside);
+  // Between passes of the trail the map decides: the margin may have closed a door the
+  // robot drove through, but a wall between two trails is in the map itself.
+  const auto passable = [&](planner::Point2 a, planner::Point2 b) {
+    return segment_not_occupied(*in.map, a, b, cm.options().occupied_threshold);
+  };
+  planner::Path path = crumbs.backtrack({in.pose.x, in.pose.y}, outside, passable);
   if (path.size() < 2) return s;
   s.outcome = SelectionOutcome::kPlanned;
   s.goal_x = path.back().x;

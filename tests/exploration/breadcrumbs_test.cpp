@@ -43,6 +43,42 @@ TEST(Breadcrumbs, BacktrackRetracesNewestFirstAndPopsWhatItRetraced) {
   EXPECT_EQ(c.size(), 3U);  // nothing popped when no crumb qualifies
 }
 
+// A trail that comes back past its own start (kth_50010540 nearest: the robot stood in a door
+// it had driven through 138 m of trail earlier; retracing all of it took it away from the
+// door, and the next selection back into it, for 600 s).
+TEST(Breadcrumbs, BacktrackTakesTheShortestWayAlongTheTrailWhereItsPassesMeet) {
+  Breadcrumbs c(0.1);
+  const auto leg = [&](planner::Point2 a, planner::Point2 b) {
+    for (int i = 0; i <= 50; ++i) c.drop({a.x + (b.x - a.x) * i / 50.0, a.y + (b.y - a.y) * i / 50.0});
+  };
+  leg({0.0, 0.0}, {5.0, 0.0});  // out along y = 0 ...
+  leg({5.0, 0.0}, {5.0, 3.0});
+  leg({5.0, 3.0}, {0.25, 3.0});
+  leg({0.25, 3.0}, {0.25, 0.2});  // ... and back down beside the start
+  const auto outside = [](planner::Point2 p) { return p.x < 0.01 && p.y < 0.01; };  // the first crumb
+  const auto length = [](const planner::Path& p) {
+    double l = 0.0;
+    for (std::size_t i = 1; i < p.size(); ++i) l += planner::distance(p[i - 1], p[i]);
+    return l;
+  };
+
+  Breadcrumbs open = c;
+  const planner::Path shortcut = open.backtrack({0.25, 0.2}, outside, [](planner::Point2, planner::Point2) { return true; });
+  ASSERT_GE(shortcut.size(), 2U);
+  EXPECT_DOUBLE_EQ(shortcut.back().x, 0.0);
+  EXPECT_DOUBLE_EQ(shortcut.back().y, 0.0);
+  EXPECT_LT(length(shortcut), 0.5);  // across to the first pass, then back along it
+  EXPECT_EQ(open.size(), 1U);        // the newer crumbs are popped all the same
+
+  // A wall between the passes (the map's occupied cells say so): the way is the trail.
+  Breadcrumbs walled = c;
+  const auto wall = [](planner::Point2 a, planner::Point2 b) { return (a.y < 0.1) == (b.y < 0.1); };  // at y = 0.1
+  const planner::Path around = walled.backtrack({0.25, 0.2}, outside, wall);
+  EXPECT_GT(length(around), 15.0);  // 5 + 3 + 4.75 + 2.8 m back along the loop
+  // Without a passability test no passes are joined either.
+  EXPECT_GT(length(Breadcrumbs(c).backtrack({0.25, 0.2}, outside)), 15.0);
+}
+
 // Two 2 m x 1.5 m rooms (5 cm cells) side by side; the wall between them has a 6-cell
 // (0.3 m) door, which a 0.18 m inflation closes. The left room is mapped all round, the right
 // one is open on its far side: its frontier is unreachable from the left room.

@@ -64,8 +64,9 @@ Selection replan_to_goal(const SelectionInputs& in, const planner::Point2& goal)
 
 /// The way out when no frontier can be reached from the robot's place on the costmap: the
 /// robot's own trail back to its last crumb on a free cell outside that place (the robot's
-/// region on the costmap, from its nearest free cell). kPlanned with the goal at that crumb
-/// (the crumbs on the way are popped), or kUnreachable when no crumb lies outside.
+/// region on the costmap, from its nearest free cell), the shortest way along the trail
+/// (passes joined where the map has no occupied cell between them). kPlanned with the goal
+/// at that crumb (the newer crumbs are popped), or kUnreachable when no crumb lies outside.
 Selection select_escape(const SelectionInputs& in, Breadcrumbs& crumbs);
 
 /// The free cell of `costmap` nearest to (x, y) within `radius` (a robot brushing a wall
