@@ -124,9 +124,11 @@ void Mission::sense() {
   }
   if (rbpf_) {
     map_changed_ = rbpf_->add_scan(scan);
+    if (map_changed_) sensed_.add(estimate());
     return;
   }
   slam::insert_scan(truth_map_, robot_.pose(), scan, options_.slam.insert);
+  sensed_.add(robot_.pose());
   // The map grows every scan; the costmap and frontiers follow at the filter's pace.
   const slam::Pose2 moved = last_refresh_pose_.between(robot_.pose());
   map_changed_ = time_ <= options_.laser.period() + 1e-9 || moved.norm() >= options_.slam.linear_update ||
@@ -169,18 +171,23 @@ void Mission::refresh() {
   const std::size_t best = rbpf_ ? rbpf_->best_particle() : 0;
   if (resamplings != last_resamplings_ || best != last_best_ || stats_.map_refreshes == 1) {
     frontiers_.rebuild(m);
-  } else {
-    const slam::Pose2 p = estimate();
+    costmap_ = planner::Costmap(m, options_.planner.costmap);
+  } else if (!sensed_.empty()) {
+    // Only the scans since the last refresh changed the map: within the sensor's range
+    // (and a metre of slack) of the poses they were taken from.
     const double r = options_.laser.max_range + 1.0;
-    frontiers_.update(m, m.cell_at(p.x - r, p.y - r), m.cell_at(p.x + r, p.y + r));
+    const slam::CellIndex lo = m.cell_at(sensed_.lo.x - r, sensed_.lo.y - r);
+    const slam::CellIndex hi = m.cell_at(sensed_.hi.x + r, sensed_.hi.y + r);
+    frontiers_.update(m, lo, hi);
+    costmap_.update(m, lo, hi);
   }
+  sensed_ = {};
   last_resamplings_ = resamplings;
   last_best_ = best;
   if (reached_goal_) {
     stats_.retired_frontier_cells += frontiers_.retire_near(m, reached_goal_->x, reached_goal_->y, kRetireRadius);
     reached_goal_.reset();
   }
-  costmap_ = planner::Costmap(m, options_.planner.costmap);
   // A backtrack follows the robot's own trail, which the margin may have closed: that is
   // why it is taken. The reactive stop still guards it.
   if (follower_ && !backtracking_ && !follower_->path_still_valid(costmap_)) {

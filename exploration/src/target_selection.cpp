@@ -43,10 +43,20 @@ bool segment_not_occupied(const slam::OccupancyGrid& map, planner::Point2 a, pla
   return true;
 }
 
-TravelCost travel_cost(const planner::Costmap& cm, const planner::Point2& start) {
+// Travel costs from `start`; with `targets`, exact only for them (the search stops there).
+TravelCost travel_cost(const planner::Costmap& cm, const planner::Point2& start,
+                       const std::vector<slam::CellIndex>& targets = {}) {
   const slam::CellIndex lo = cm.origin();
   const slam::CellIndex hi{lo.x + cm.width() - 1, lo.y + cm.height() - 1};
-  return TravelCost(lo, hi, cm.resolution(), cm.cell_at(start), [&](slam::CellIndex c) { return cm.cell_is_free(c); });
+  return TravelCost(lo, hi, cm.resolution(), cm.cell_at(start), [&](slam::CellIndex c) { return cm.cell_is_free(c); },
+                    targets);
+}
+
+std::vector<slam::CellIndex> goal_cells(const planner::Costmap& cm, const std::vector<FrontierCluster>& clusters) {
+  std::vector<slam::CellIndex> cells;
+  for (const FrontierCluster& f : clusters)
+    if (f.has_goal) cells.push_back(cm.cell_at({f.goal_x, f.goal_y}));
+  return cells;
 }
 
 // The Dijkstra path, string-pulled: each waypoint is the farthest later cell still in free
@@ -155,7 +165,7 @@ Selection select_target(const SelectionInputs& in) {
   const auto start = nearest_free(*in.costmap, in.pose.x, in.pose.y, 0.5);
   if (!start) return s;
   bool any_reachable = false, any_waiting = false;
-  const TravelCost cost = travel_cost(*in.costmap, *start);
+  const TravelCost cost = travel_cost(*in.costmap, *start, goal_cells(*in.costmap, clusters));
   std::vector<Candidate> candidates = price(in, clusters, cost, any_reachable, any_waiting);
   s.candidates = candidates.size();
   if (!any_reachable) return s;  // kUnreachable: frontiers only beyond gaps the robot cannot pass
@@ -189,7 +199,7 @@ Selection replan_to_goal(const SelectionInputs& in, const planner::Point2& goal)
   s.outcome = SelectionOutcome::kPlanFailed;
   const auto start = nearest_free(*in.costmap, in.pose.x, in.pose.y, 0.5);
   if (!start || !in.costmap->is_free(goal)) return s;
-  const TravelCost cost = travel_cost(*in.costmap, *start);
+  const TravelCost cost = travel_cost(*in.costmap, *start, {in.costmap->cell_at(goal)});
   if (!cost.reachable(in.costmap->cell_at(goal))) return s;
   plan_to(in, cost, *start, goal, s);
   return s;

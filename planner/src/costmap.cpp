@@ -19,37 +19,62 @@ void validate(const CostmapOptions& o) {
 
 Costmap::Costmap(const slam::OccupancyGrid& map, const CostmapOptions& options)
     : options_((validate(options), options)), resolution_(map.resolution()) {
-  slam::CellIndex lo, hi;
-  if (!map.known_bounds(lo, hi)) return;  // nothing observed: an empty (all-blocked) costmap
+  if (!map.known_bounds(known_lo_, known_hi_)) return;  // nothing observed: an empty (all-blocked) costmap
   const int margin_cells = static_cast<int>(std::ceil(options.margin / resolution_));
-  origin_ = {lo.x - margin_cells, lo.y - margin_cells};
-  width_ = hi.x - lo.x + 1 + 2 * margin_cells;
-  height_ = hi.y - lo.y + 1 + 2 * margin_cells;
-
-  std::vector<std::uint8_t> blocked(static_cast<std::size_t>(width_) *
-                                    static_cast<std::size_t>(height_));
-  mark_blocked_cells(map, blocked);
-  // Inflation: free only if no blocked centre lies within the radius (squared, in cells^2).
-  const std::vector<double> d2 = detail::squared_distance_transform(blocked, width_, height_);
-  const double radius_cells = options.robot_radius / resolution_;
-  // The epsilon keeps a centre at exactly the radius blocked despite rounding of the division.
-  const double limit = radius_cells * radius_cells + 1e-9;
-  free_.resize(d2.size());
-  for (std::size_t i = 0; i < d2.size(); ++i) free_[i] = d2[i] > limit ? 1 : 0;
+  origin_ = {known_lo_.x - margin_cells, known_lo_.y - margin_cells};
+  width_ = known_hi_.x - known_lo_.x + 1 + 2 * margin_cells;
+  height_ = known_hi_.y - known_lo_.y + 1 + 2 * margin_cells;
+  free_.resize(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  inflate(map, 0, 0, width_ - 1, height_ - 1);
 }
 
-void Costmap::mark_blocked_cells(const slam::OccupancyGrid& map,
+void Costmap::update(const slam::OccupancyGrid& map, slam::CellIndex lo, slam::CellIndex hi) {
+  slam::CellIndex known_lo, known_hi;
+  if (empty() || !map.known_bounds(known_lo, known_hi) || known_lo != known_lo_ || known_hi != known_hi_) {
+    *this = Costmap(map, options_);  // the raster's extent follows the known bounds
+    return;
+  }
+  // A cell's status depends on the blocked cells within the radius: the changed cells can
+  // only free or block cells up to the radius around them.
+  const int r = inflation_reach();
+  const int x0 = std::max(0, lo.x - origin_.x - r), y0 = std::max(0, lo.y - origin_.y - r);
+  const int x1 = std::min(width_ - 1, hi.x - origin_.x + r), y1 = std::min(height_ - 1, hi.y - origin_.y + r);
+  if (x0 <= x1 && y0 <= y1) inflate(map, x0, y0, x1, y1);
+}
+
+int Costmap::inflation_reach() const { return static_cast<int>(std::ceil(options_.robot_radius / resolution_)) + 1; }
+
+void Costmap::inflate(const slam::OccupancyGrid& map, int x0, int y0, int x1, int y1) {
+  // The blocked cells that can reach the rectangle lie within the radius of it.
+  const int r = inflation_reach();
+  const int bx0 = std::max(0, x0 - r), by0 = std::max(0, y0 - r);
+  const int bw = std::min(width_ - 1, x1 + r) - bx0 + 1, bh = std::min(height_ - 1, y1 + r) - by0 + 1;
+  std::vector<std::uint8_t> blocked(static_cast<std::size_t>(bw) * static_cast<std::size_t>(bh));
+  mark_blocked_cells(map, bx0, by0, bw, bh, blocked);
+  // Inflation: free only if no blocked centre lies within the radius (squared, in cells^2).
+  const std::vector<double> d2 = detail::squared_distance_transform(blocked, bw, bh);
+  const double radius_cells = options_.robot_radius / resolution_;
+  // The epsilon keeps a centre at exactly the radius blocked despite rounding of the division.
+  const double limit = radius_cells * radius_cells + 1e-9;
+  for (int y = y0; y <= y1; ++y) {
+    const double* row = &d2[static_cast<std::size_t>(y - by0) * static_cast<std::size_t>(bw)];
+    for (int x = x0; x <= x1; ++x) free_[index(x, y)] = row[x - bx0] > limit ? 1 : 0;
+  }
+}
+
+void Costmap::mark_blocked_cells(const slam::OccupancyGrid& map, int x0, int y0, int w, int h,
                                  std::vector<std::uint8_t>& blocked) const {
   // p >= threshold  <=>  log-odds >= logit(threshold): comparing fixed-point log-odds saves
   // an exp() per cell and reads the same decision as OccupancyGrid::probability().
   const double logit = std::log(options_.occupied_threshold / (1.0 - options_.occupied_threshold));
   const double occupied_fixed = logit * slam::GridTile::kLogOddsScale;
-  for (int y = 0; y < height_; ++y) {
-    for (int x = 0; x < width_; ++x) {
-      const std::int16_t l = map.raw_log_odds({origin_.x + x, origin_.y + y});
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const std::int16_t l = map.raw_log_odds({origin_.x + x0 + x, origin_.y + y0 + y});
       const bool unknown = l == slam::GridTile::kUnknown;
       const bool is_blocked = unknown ? !options_.unknown_is_free : l >= occupied_fixed;
-      blocked[index(x, y)] = is_blocked ? 1 : 0;
+      blocked[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)] =
+          is_blocked ? 1 : 0;
     }
   }
 }

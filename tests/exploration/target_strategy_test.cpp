@@ -46,6 +46,18 @@ TEST(TravelCost, OctileDistancesAndDetours) {
   EXPECT_EQ(path.back(), (slam::CellIndex{6, 0}));
   for (const auto c : path) EXPECT_TRUE(free(c));
   EXPECT_TRUE(t.path_to({5, 3}).empty());
+
+  // Stopping at targets: the same distances and paths for them, and the search ends early
+  // (the far corner behind the wall is not settled when the targets are near).
+  const TravelCost near({0, 0}, {10, 10}, 1.0, {0, 0}, free, {{3, 3}, {4, 0}});
+  EXPECT_EQ(near.at({3, 3}), t.at({3, 3}));
+  EXPECT_EQ(near.at({4, 0}), t.at({4, 0}));
+  EXPECT_EQ(near.path_to({3, 3}), t.path_to({3, 3}));
+  EXPECT_FALSE(near.reachable({10, 0}));
+  const TravelCost far({0, 0}, {10, 10}, 1.0, {0, 0}, free, {{6, 0}, {5, 3}});  // one target is a wall
+  EXPECT_EQ(far.at({6, 0}), t.at({6, 0}));
+  EXPECT_EQ(far.path_to({6, 0}), path);
+  EXPECT_FALSE(far.reachable({5, 3}));
 }
 
 }  // namespace

@@ -92,6 +92,47 @@ TEST(Costmap, InflationMatchesBruteForceOnRandomGrids) {
   }
 }
 
+// Property: updating the window where cells changed gives the raster of a rebuild, for
+// random changes (walls appear and clear, unknown cells become known) and radii.
+TEST(Costmap, UpdateOfAWindowEqualsARebuild) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 20; ++trial) {
+    OccupancyGrid g;
+    fill(g, 0, 0, 79, 59, false);  // known bounds: whole tiles, so changes inside keep them
+    std::uniform_int_distribution<int> x(0, 79), y(0, 59), side(0, 12);
+    for (int i = 0; i < 40; ++i) set_occupied(g, {x(rng), y(rng)});
+    CostmapOptions o;
+    o.robot_radius = 0.02 + 0.04 * (trial % 6);
+    o.unknown_is_free = trial % 2 == 1;
+    Costmap c(g, o);
+    const CellIndex lo{x(rng) - 6, y(rng) - 6};
+    const CellIndex hi{lo.x + side(rng), lo.y + side(rng)};
+    std::uniform_int_distribution<int> wx(lo.x, hi.x), wy(lo.y, hi.y);
+    for (int i = 0; i < 15; ++i) {
+      const CellIndex w{wx(rng), wy(rng)};
+      if (i % 3 == 0) fill(g, w.x, w.y, w.x, w.y, false);  // a wall cell cleared
+      else set_occupied(g, w);
+    }
+    c.update(g, lo, hi);
+    const Costmap rebuilt(g, o);
+    ASSERT_EQ(c.origin(), rebuilt.origin());
+    ASSERT_EQ(c.width(), rebuilt.width());
+    for (int cy = c.origin().y - 1; cy <= c.origin().y + c.height(); ++cy)
+      for (int cx = c.origin().x - 1; cx <= c.origin().x + c.width(); ++cx)
+        ASSERT_EQ(c.cell_is_free({cx, cy}), rebuilt.cell_is_free({cx, cy}))
+            << "trial " << trial << " cell " << cx << "," << cy << " window " << lo.x << "," << lo.y << " .. " << hi.x
+            << "," << hi.y;
+  }
+  // Cells outside the known bounds: the raster grows with a rebuild.
+  OccupancyGrid g;
+  fill(g, 0, 0, 39, 39, false);
+  Costmap c(g, {});
+  fill(g, 100, 0, 110, 10, false);
+  c.update(g, {100, 0}, {110, 10});
+  EXPECT_TRUE(c.cell_is_free({105, 5}));
+  EXPECT_EQ(c.width(), Costmap(g, {}).width());
+}
+
 TEST(Costmap, SegmentCannotSlipBetweenDiagonalObstacles) {
   OccupancyGrid g;
   fill(g, 0, 0, 19, 19, false);

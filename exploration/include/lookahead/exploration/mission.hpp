@@ -5,6 +5,8 @@
 // act (pure pursuit -> unicycle, collisions checked against the true world), record.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -140,6 +142,15 @@ class Mission {
   int stop_streak_ = 0;        ///< consecutive steps the reactive stop has held the robot
   std::size_t last_resamplings_ = 0, last_best_ = 0;
   slam::Pose2 last_refresh_pose_;
+  /// Where scans went into the map since the last refresh: the bounding box of their poses.
+  struct SensedPoses {
+    planner::Point2 lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+    void add(const slam::Pose2& p) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    [[nodiscard]] bool empty() const { return lo.x > hi.x; }
+  } sensed_;
   std::vector<slam::Pose2> true_path_, estimated_path_;
   std::vector<CoverageSample> curve_;
 };

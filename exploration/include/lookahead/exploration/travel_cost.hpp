@@ -14,9 +14,14 @@ namespace lookahead::exploration {
 
 class TravelCost {
  public:
-  /// Distances [m] from `start` over cells in [lo, hi] for which traversable(c) holds.
+  /// Distances [m] from `start` over cells in [lo, hi] for which traversable(c) holds
+  /// (asked at most once per cell). With `targets`, the search stops once every reachable
+  /// target is settled: distances and paths are then exact for the targets and for the cells
+  /// nearer than the farthest of them; other cells may read too far or unreachable. A replan
+  /// needs one goal, not the whole building (on a 134 m plan the full search was 30 % of a
+  /// mission's time).
   TravelCost(slam::CellIndex lo, slam::CellIndex hi, double resolution, slam::CellIndex start,
-             const std::function<bool(slam::CellIndex)>& traversable);
+             const std::function<bool(slam::CellIndex)>& traversable, const std::vector<slam::CellIndex>& targets = {});
 
   /// Distance to a cell [m]; infinity when unreachable or outside the bounds.
   [[nodiscard]] double at(slam::CellIndex c) const;

@@ -13,8 +13,8 @@
 //
 // The raster covers the grid's known bounds plus `margin`; everything outside it is blocked.
 // Cells share the grid's indexing (same resolution and origin), so slam::CellIndex values of
-// the grid address the costmap too. The costmap is an immutable snapshot: rebuild it when the
-// map changes.
+// the grid address the costmap too. The costmap is a snapshot: rebuild it when the map
+// changes, or update() it when the changes are known to lie in a window (the last scans).
 #pragma once
 
 #include <cstdint>
@@ -47,6 +47,11 @@ class Costmap {
   Costmap() = default;
   /// Snapshot of `map` (validates `options`). Cost: O(cells) for the raster and inflation.
   Costmap(const slam::OccupancyGrid& map, const CostmapOptions& options);
+
+  /// Brings the costmap up to date with `map`, whose cells changed only within [lo, hi]
+  /// since the costmap was made from it: the same raster as a rebuild, at the cost of the
+  /// window (a whole rebuild when the map's known bounds moved).
+  void update(const slam::OccupancyGrid& map, slam::CellIndex lo, slam::CellIndex hi);
 
   [[nodiscard]] const CostmapOptions& options() const { return options_; }
   [[nodiscard]] double resolution() const { return resolution_; }
@@ -82,11 +87,17 @@ class Costmap {
     return static_cast<std::size_t>(local_y) * static_cast<std::size_t>(width_) +
            static_cast<std::size_t>(local_x);
   }
-  void mark_blocked_cells(const slam::OccupancyGrid& map, std::vector<std::uint8_t>& blocked) const;
+  /// Blocked cells reach this many cells (the radius, rounded up, plus one).
+  [[nodiscard]] int inflation_reach() const;
+  /// Recomputes free_ over the raster rectangle [x0, x1] x [y0, y1] (local, inclusive).
+  void inflate(const slam::OccupancyGrid& map, int x0, int y0, int x1, int y1);
+  void mark_blocked_cells(const slam::OccupancyGrid& map, int x0, int y0, int w, int h,
+                          std::vector<std::uint8_t>& blocked) const;
 
   CostmapOptions options_;
   double resolution_ = 0.05;
   slam::CellIndex origin_;
+  slam::CellIndex known_lo_, known_hi_;  ///< the map's known bounds the raster was made for
   int width_ = 0;
   int height_ = 0;
   std::vector<std::uint8_t> free_;  ///< 1 = free after inflation, row-major from origin_
