@@ -22,6 +22,23 @@ void set_wall(OccupancyGrid& g, int x0, int y0, int x1, int y1) {
 // A 40 x 20 cell room with walls, open on its right side: the frontier is that side.
 OccupancyGrid open_room() { return testing::open_room(40, 20, 40); }
 
+// The detector compares raw log-odds against precomputed thresholds instead of calling
+// probability(): every log-odds value must get the same answer either way.
+TEST(FrontierDetector, FreeCellsAreThoseBelowTheFreeProbability) {
+  for (const double threshold : {0.35, 0.2, 0.45}) {
+    FrontierOptions o;
+    o.free_threshold = threshold;
+    const FrontierDetector d(o);
+    slam::OccupancyGrid g;
+    for (int l = -4000; l <= 4000; ++l) {
+      const slam::CellIndex c{l + 4000, 0};
+      g.add_log_odds(c, l);
+      if (g.raw_log_odds(c) != l) continue;  // clamped
+      ASSERT_EQ(d.is_free(g, c), g.probability(c) < threshold) << "log-odds " << l << ", threshold " << threshold;
+    }
+  }
+}
+
 TEST(FrontierDetector, FreeCellsNextToUnknownAreFrontiers) {
   const OccupancyGrid g = open_room();
   FrontierDetector d;

@@ -67,7 +67,12 @@ class FrontierDetector {
   bool find_goal(const slam::OccupancyGrid& grid, FrontierCluster& cluster) const;
   bool has_clearance(const slam::OccupancyGrid& grid, slam::CellIndex c) const;
 
+  /// Occupied cell (known, at or above the occupied threshold).
+  bool is_occupied(const slam::OccupancyGrid& grid, slam::CellIndex c) const;
+
   FrontierOptions options_;
+  // The thresholds as fixed-point log-odds: the first value whose probability reaches each.
+  int free_from_ = 0, occupied_from_ = 0;
   std::unordered_set<slam::CellIndex, CellHash> cells_;
   std::unordered_set<slam::CellIndex, CellHash> retired_;
 };
