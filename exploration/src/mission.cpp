@@ -276,6 +276,7 @@ SelectionInputs Mission::selection_inputs() {
   SelectionInputs in{&map(), &costmap_, &frontiers_, strategy_.get(), &blacklist_, estimate(), time_,
                      options_.laser.max_range, options_.max_goal_attempts, options_.planner};
   in.planner.seed = static_cast<std::uint32_t>(options_.planner.seed + static_cast<std::uint32_t>(stats_.plans));
+  in.robot_radius = options_.robot.radius;
   if (lookahead_) {
     in.predicted = &lookahead_->predicted();
     in.skip_confidence = options_.lookahead.skip_confidence;

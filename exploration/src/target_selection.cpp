@@ -32,13 +32,26 @@ std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, dou
 
 namespace {
 
-// No cell the segment a-b passes (sampled every quarter cell) is occupied in the map itself.
-bool segment_not_occupied(const slam::OccupancyGrid& map, planner::Point2 a, planner::Point2 b, double threshold) {
+// No cell within `clearance` of the segment a-b (sampled every quarter cell) is occupied in
+// the map itself.
+bool segment_clear(const slam::OccupancyGrid& map, planner::Point2 a, planner::Point2 b, double clearance,
+                   double threshold) {
+  const double res = map.resolution();
+  const int r = static_cast<int>(std::ceil(clearance / res));
   const double length = std::hypot(b.x - a.x, b.y - a.y);
-  const int steps = std::max(1, static_cast<int>(std::ceil(4.0 * length / map.resolution())));
+  const int steps = std::max(1, static_cast<int>(std::ceil(4.0 * length / res)));
   for (int i = 0; i <= steps; ++i) {
     const double t = static_cast<double>(i) / steps;
-    if (map.probability(map.cell_at(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y))) >= threshold) return false;
+    const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
+    const slam::CellIndex c = map.cell_at(x, y);
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const slam::CellIndex q{c.x + dx, c.y + dy};
+        double qx, qy;
+        map.cell_center(q, qx, qy);
+        const bool near = (dx == 0 && dy == 0) || std::hypot(qx - x, qy - y) <= clearance;
+        if (near && map.is_known(q) && map.probability(q) >= threshold) return false;
+      }
   }
   return true;
 }
@@ -215,10 +228,11 @@ Selection select_escape(const SelectionInputs& in, Breadcrumbs& crumbs) {
   const auto outside = [&](planner::Point2 p) {
     return cm.is_free(p) && !(place && place->reachable(cm.cell_at(p)));
   };
-  // Between passes of the trail the map decides: the margin may have closed a door the
-  // robot drove through, but a wall between two trails is in the map itself.
+  // Between passes of the trail the map decides, with the robot's body and no margin: the
+  // margin may have closed a door the robot drove through, but a wall between two trails,
+  // or a jamb a shortcut would brush, is in the map itself.
   const auto passable = [&](planner::Point2 a, planner::Point2 b) {
-    return segment_not_occupied(*in.map, a, b, cm.options().occupied_threshold);
+    return segment_clear(*in.map, a, b, in.robot_radius, cm.options().occupied_threshold);
   };
   planner::Path path = crumbs.backtrack({in.pose.x, in.pose.y}, outside, passable);
   if (path.size() < 2) return s;

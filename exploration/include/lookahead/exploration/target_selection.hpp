@@ -54,6 +54,9 @@ struct SelectionInputs {
   /// The look-ahead map, for strategies that use predictions (null: none).
   const PredictedMap* predicted = nullptr;
   double skip_confidence = 0.6;  ///< hypotheses below this Psi do not count for skipping
+  /// The robot's body [m] (no safety margin): a backtrack's shortcut between two passes of
+  /// the trail keeps this clear of occupied cells.
+  double robot_radius = 0.0;
 };
 
 Selection select_target(const SelectionInputs& in);
