@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Planner kernels on a generated 20 m x 15 m office (5 cm cells, 3 x 2 rooms joined by
-// 0.9 m doors): costmap construction (raster + exact distance transform), the cell-walk
+// 0.9 m doors): costmap construction (raster + exact distance transform; on an 80 m x 45 m
+// building also the update of a laser's window against a rebuild), the cell-walk
 // segment check OMPL calls for every edge, and whole plan() calls per algorithm with a fixed
 // sample count (so every run does the same work; time_budget is only a safety cap).
 // Run with --benchmark_repetitions=5 and read the medians.
@@ -65,6 +66,47 @@ void BM_CostmapBuild(benchmark::State& state) {
   state.counters["cells"] = 404.0 * 304.0;
 }
 BENCHMARK(BM_CostmapBuild)->Unit(benchmark::kMillisecond);
+
+/// 80 m x 45 m: the office's rooms repeated 4 x 3 times, the size of a large KTH plan.
+const slam::OccupancyGrid& shared_building() {
+  static const slam::OccupancyGrid g = [] {
+    slam::OccupancyGrid b;
+    fill(b, 0, 0, 1599, 899, false);
+    for (int x = 0; x <= 1600; x += 133) {
+      fill(b, x, 0, x + 2, 899, true);
+      for (int y = 60; y < 900; y += 150) fill(b, x, y, x + 2, y + 17, false);  // 0.9 m doors
+    }
+    for (int y = 0; y <= 900; y += 150) {
+      fill(b, 0, y, 1599, y + 2, true);
+      for (int x = 60; x < 1600; x += 133) fill(b, x, y, x + 17, y + 2, false);
+    }
+    return b;
+  }();
+  return g;
+}
+
+// A mission's refresh after a scan, the old way: the whole raster again.
+void BM_CostmapRebuildLarge(benchmark::State& state) {
+  const slam::OccupancyGrid& g = shared_building();
+  for (auto _ : state) {
+    planner::Costmap c(g, {});
+    benchmark::DoNotOptimize(c);
+  }
+}
+BENCHMARK(BM_CostmapRebuildLarge)->Unit(benchmark::kMillisecond);
+
+// The same refresh as an update of the window a 12 m laser reaches (plus 1 m) around the
+// middle of the building: the raster a rebuild gives, at the cost of the window.
+void BM_CostmapUpdateWindowLarge(benchmark::State& state) {
+  const slam::OccupancyGrid& g = shared_building();
+  planner::Costmap c(g, {});
+  const int r = 260;  // 13 m in 5 cm cells
+  for (auto _ : state) {
+    c.update(g, {800 - r, 450 - r}, {800 + r, 450 + r});
+    benchmark::DoNotOptimize(c);
+  }
+}
+BENCHMARK(BM_CostmapUpdateWindowLarge)->Unit(benchmark::kMillisecond);
 
 void BM_SegmentIsFree(benchmark::State& state) {
   const planner::Costmap c(shared_office(), {});
