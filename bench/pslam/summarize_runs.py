@@ -41,7 +41,7 @@ def main(folder):
     if not runs: sys.exit(f"{folder}: no run.json found")
     print(f"| world | strategy | runs | end | time [s] | path [m] | explored | with predictions | all predicted cells right | final predicted cells right | ... inside the building | hypotheses | Psi vs world: mean, > 0.4 |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-    all_psi, times = [], defaultdict(list)
+    all_psi, all_solid, times = [], [], defaultdict(list)
     for (world, strategy), rs in sorted(runs.items()):
         t = [r['simulated_time_s'] for r in rs]; times[world, strategy] = t
         p = [r['path_length_m'] for r in rs]
@@ -52,6 +52,7 @@ def main(folder):
         acc_in = [x['final_predicted_accuracy_inside'] for x in pr if x.get('final_predicted_area_inside_m2', 0) > 0]
         acc_all = [x['cell_accuracy'] for x in pr if x.get('hypotheses', 0) > 0]
         psi = [v for x in pr for v in x.get('psi_world', [])]; all_psi += psi
+        all_solid += [v for x in pr for v in x.get('psi_solid_world', [])]
         ends = ', '.join(sorted({r['status'] for r in rs}))
         f = lambda v, d=0: '%.*f +- %.*f' % (d, mean_std(v)[0], d, mean_std(v)[1]) if v else '-'
         psi_txt = '%.2f, %.0f %%' % (sum(psi) / len(psi), 100 * sum(v > 0.4 for v in psi) / len(psi)) if psi else '-'
@@ -68,6 +69,9 @@ def main(folder):
         print(f"\nall hypotheses: {len(all_psi)}, Psi against the world: mean {sum(all_psi) / len(all_psi):.2f}, "
               f"{sum(v > 0.4 for v in all_psi)} above 0.4 ({100 * sum(v > 0.4 for v in all_psi) / len(all_psi):.0f} %), "
               f"range {min(all_psi):.2f}..{max(all_psi):.2f}")
+    if all_solid:  # the measure before 2026-11-22: every world cell, solid outside included
+        print(f"against every world cell instead (solid beyond the outer walls): mean {sum(all_solid) / len(all_solid):.2f}, "
+              f"{sum(v > 0.4 for v in all_solid)} above 0.4 ({100 * sum(v > 0.4 for v in all_solid) / len(all_solid):.0f} %)")
 
 if __name__ == '__main__':
     main(sys.argv[1] if len(sys.argv) > 1 else 'out/study/pslam_maze')
