@@ -13,7 +13,7 @@ namespace {
 
 // The world's walls within the target region S_f.
 slam::PicturePoints true_walls(const World& world, double tx, double ty, double radius) {
-  slam::PicturePoints walls{{}, {220, 30, 30}, "true walls in S_f", 1, true};
+  slam::PicturePoints walls{{}, {240, 170, 170}, "true walls in S_f", 1, true};
   const int r = static_cast<int>(std::ceil(radius / world.resolution()));
   const slam::CellIndex t = world.cell_of({tx, ty});
   for (int dy = -r; dy <= r; ++dy) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/predictor/structure_predictor.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -39,31 +41,47 @@ std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, d
   const double r = diameter / 2;
   const slam::CellIndex t = map.cell_at(tx, ty);
   const int r_cells = static_cast<int>(std::ceil(r / map.resolution()));
-  const int seed_cells = static_cast<int>(std::ceil(kSeedRadius / map.resolution()));
+  const int seed_cells =
+      std::min(r_cells, static_cast<int>(std::ceil(kSeedRadius / map.resolution())));
   const int side = 2 * r_cells + 1;
-  std::vector<char> seen(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
-  const auto inside = [&](slam::CellIndex c) {
+  enum Mark : char { kNew = 0, kPassed = 1, kInRegion = 2 };
+  std::vector<char> seen(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), kNew);
+  const auto within = [&](slam::CellIndex c, int radius) {
     const int dx = c.x - t.x, dy = c.y - t.y;
-    return dx * dx + dy * dy <= r_cells * r_cells;
+    return dx * dx + dy * dy <= radius * radius;
   };
   const auto mark = [&](slam::CellIndex c) -> char& {
     return seen[static_cast<std::size_t>((c.y - t.y + r_cells) * side + (c.x - t.x + r_cells))];
   };
-  std::vector<slam::CellIndex> region;
-  for (int dy = -seed_cells; dy <= seed_cells; ++dy) {
-    for (int dx = -seed_cells; dx <= seed_cells; ++dx) {
-      const slam::CellIndex c{t.x + dx, t.y + dy};
-      if (dx * dx + dy * dy > seed_cells * seed_cells || map.is_known(c) || mark(c)) continue;
-      mark(c) = 1;
-      region.push_back(c);
+  const auto neighbours = [](slam::CellIndex c) {
+    return std::array<slam::CellIndex, 4>{
+        slam::CellIndex{c.x + 1, c.y}, slam::CellIndex{c.x - 1, c.y}, slam::CellIndex{c.x, c.y + 1},
+        slam::CellIndex{c.x, c.y - 1}};
+  };
+  // Seeds: the unknown cells within kSeedRadius that f reaches without crossing a wall
+  // (4-connected through free and unknown cells; a mapped wall line is 8-connected, so it
+  // stops the fill). The goal stands on free space near the frontier, not on it, hence the
+  // radius. Until 2026-11-22 every unknown cell within the radius seeded the region, so a
+  // target by a seen outer wall seeded the unknown space behind it, and the hypothesis
+  // predicted a whole room outside the building (the office study's lowest Psi).
+  std::vector<slam::CellIndex> passed{t}, region;
+  mark(t) = kPassed;
+  for (std::size_t i = 0; i < passed.size(); ++i) {
+    for (const slam::CellIndex n : neighbours(passed[i])) {
+      if (!within(n, seed_cells) || mark(n) != kNew) continue;
+      if (!map.is_known(n)) {
+        mark(n) = kInRegion;
+        region.push_back(n);
+      } else if (map.raw_log_odds(n) <= 0) {  // free (or undecided): the fill passes
+        mark(n) = kPassed;
+        passed.push_back(n);
+      }
     }
   }
   for (std::size_t i = 0; i < region.size(); ++i) {  // breadth-first through unknown cells
-    const slam::CellIndex c = region[i];
-    for (const slam::CellIndex n : {slam::CellIndex{c.x + 1, c.y}, slam::CellIndex{c.x - 1, c.y},
-                                    slam::CellIndex{c.x, c.y + 1}, slam::CellIndex{c.x, c.y - 1}}) {
-      if (!inside(n) || mark(n) || map.is_known(n)) continue;
-      mark(n) = 1;
+    for (const slam::CellIndex n : neighbours(region[i])) {
+      if (!within(n, r_cells) || mark(n) == kInRegion || map.is_known(n)) continue;
+      mark(n) = kInRegion;
       region.push_back(n);
     }
   }

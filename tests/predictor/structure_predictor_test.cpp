@@ -184,6 +184,26 @@ TEST(UnexploredRegion, StopsAtExploredWalls) {
   EXPECT_FALSE(contains(1.0, 1.0));  // inside the sealed box: unknown, but not beyond f
 }
 
+// A target 0.3 m in front of a seen outer wall, with unknown space along the free side and
+// behind the wall: the region is the unknown space on the target's side only, although the
+// cells behind the wall lie within the seed radius.
+TEST(UnexploredRegion, ATargetByASeenWallDoesNotSeedBehindIt) {
+  slam::OccupancyGrid map;
+  for (double x = 0.025; x < 9; x += 0.05) {  // the wall runs past the region's reach (x 7.9)
+    if (x < 4)
+      for (double y = 0.025; y < 2; y += 0.05) map.add_log_odds(map.cell_at(x, y), -1000);  // free
+    map.add_log_odds(map.cell_at(x, 2.025), 3000);  // the wall
+  }
+  const std::vector<slam::CellIndex> region = unexplored_region(map, 3.9, 1.7, 8.0);  // by the wall
+  const auto contains = [&](double x, double y) {
+    const slam::CellIndex c = map.cell_at(x, y);
+    return std::find(region.begin(), region.end(), c) != region.end();
+  };
+  EXPECT_TRUE(contains(4.2, 1.5));   // the unknown beyond the free strip's end, the target's side
+  EXPECT_FALSE(contains(3.9, 2.3));  // behind the wall, 0.6 m from the target
+  EXPECT_FALSE(contains(2.0, 3.0));  // ... and the rest of the space behind it
+}
+
 TEST(FrontierAhead, FindsTheNearestFrontierInTheHeadingCone) {
   slam::OccupancyGrid map;
   for (double y = -2; y < 2; y += 0.05)

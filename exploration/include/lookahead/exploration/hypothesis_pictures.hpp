@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // One picture per hypothesis of a mission (LookaheadOptions::pictures): the map the
 // prediction was made on, the target and reference regions, the control points, the
-// hypothesis, and the true walls of the target region in red, so a low Psi against the
-// world can be told apart: a wrong registration, or a right one scored over cells no
-// robot sees.
+// hypothesis, and the true walls of the target region in pale red (under it), so a low Psi against
+// the world can be told apart: a wrong registration, or a right one scored over cells no robot
+// sees.
 #pragma once
 
 #include <string>
