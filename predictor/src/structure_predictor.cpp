@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/predictor/structure_predictor.hpp"
 
-#include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -35,57 +33,6 @@ const char* to_string(Prediction::Status status) {
     case Prediction::Status::kNoMatch: return "no_match";
   }
   return "?";
-}
-
-std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty, double diameter) {
-  const double r = diameter / 2;
-  const slam::CellIndex t = map.cell_at(tx, ty);
-  const int r_cells = static_cast<int>(std::ceil(r / map.resolution()));
-  const int seed_cells =
-      std::min(r_cells, static_cast<int>(std::ceil(kSeedRadius / map.resolution())));
-  const int side = 2 * r_cells + 1;
-  enum Mark : char { kNew = 0, kPassed = 1, kInRegion = 2 };
-  std::vector<char> seen(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), kNew);
-  const auto within = [&](slam::CellIndex c, int radius) {
-    const int dx = c.x - t.x, dy = c.y - t.y;
-    return dx * dx + dy * dy <= radius * radius;
-  };
-  const auto mark = [&](slam::CellIndex c) -> char& {
-    return seen[static_cast<std::size_t>((c.y - t.y + r_cells) * side + (c.x - t.x + r_cells))];
-  };
-  const auto neighbours = [](slam::CellIndex c) {
-    return std::array<slam::CellIndex, 4>{
-        slam::CellIndex{c.x + 1, c.y}, slam::CellIndex{c.x - 1, c.y}, slam::CellIndex{c.x, c.y + 1},
-        slam::CellIndex{c.x, c.y - 1}};
-  };
-  // Seeds: the unknown cells within kSeedRadius that f reaches without crossing a wall
-  // (4-connected through free and unknown cells; a mapped wall line is 8-connected, so it
-  // stops the fill). The goal stands on free space near the frontier, not on it, hence the
-  // radius. Until 2026-11-22 every unknown cell within the radius seeded the region, so a
-  // target by a seen outer wall seeded the unknown space behind it, and the hypothesis
-  // predicted a whole room outside the building (the office study's lowest Psi).
-  std::vector<slam::CellIndex> passed{t}, region;
-  mark(t) = kPassed;
-  for (std::size_t i = 0; i < passed.size(); ++i) {
-    for (const slam::CellIndex n : neighbours(passed[i])) {
-      if (!within(n, seed_cells) || mark(n) != kNew) continue;
-      if (!map.is_known(n)) {
-        mark(n) = kInRegion;
-        region.push_back(n);
-      } else if (map.raw_log_odds(n) <= 0) {  // free (or undecided): the fill passes
-        mark(n) = kPassed;
-        passed.push_back(n);
-      }
-    }
-  }
-  for (std::size_t i = 0; i < region.size(); ++i) {  // breadth-first through unknown cells
-    for (const slam::CellIndex n : neighbours(region[i])) {
-      if (!within(n, r_cells) || mark(n) == kInRegion || map.is_known(n)) continue;
-      mark(n) = kInRegion;
-      region.push_back(n);
-    }
-  }
-  return region;
 }
 
 std::shared_ptr<slam::HypothesisMap> make_hypothesis(const slam::OccupancyGrid& map, double tx, double ty,
