@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "lookahead/predictor/prediction_picture.hpp"
+#include "lookahead/slam/io/map_io.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -37,7 +38,10 @@ void write_hypothesis_pictures(const LookaheadMapping& lookahead, const World& w
     const PredictionRecord& r = lookahead.records()[s.record];
     const predictor::Prediction& p = s.prediction;
     const auto walls = true_walls(world, r.x, r.y, o.surroundings_diameter / 2);
-    predictor::write_prediction_picture(fmt::format("{}/{:03d}.png", dir, n++), s.map, p, o, {walls});
+    const std::string name = fmt::format("{:03d}", n++);
+    predictor::write_prediction_picture(dir + "/" + name + ".png", s.map, p, o, {walls});
+    // The map it was made on: `lookahead predict DIR/NNN.yaml --target X,Y` repeats it.
+    slam::write_map(slam::to_probability_map(s.map), dir, name);
   }
 }
 

@@ -13,8 +13,8 @@
 
 namespace lookahead::exploration {
 
-/// Writes DIR/NNN.png for every snapshot kept by `lookahead` (NNN: the hypothesis' index
-/// in run.json's prediction.hypothesis_list).
+/// Writes DIR/NNN.png and the map as DIR/NNN.pgm/.yaml for every snapshot kept by
+/// `lookahead` (NNN: the hypothesis' index in run.json's prediction.hypothesis_list).
 void write_hypothesis_pictures(const LookaheadMapping& lookahead, const World& world, const std::string& dir);
 
 }  // namespace lookahead::exploration
