@@ -9,17 +9,16 @@
 
 namespace lookahead::predictor {
 
-/// Seeds: unknown cells within this of f that f reaches without crossing a wall [m].
+/// Every unknown cell within this of f seeds the region [m]: the goal stands on free space
+/// near the frontier, not on it.
 constexpr double kSeedRadius = 1.0;
-/// Unknown passages narrower than this do not join the region [m]: the narrowest doors of
-/// our worlds are 0.6 m, so a gap this narrow in a mapped wall is beams that missed it.
-constexpr double kMinOpening = 0.3;
 
-/// Unknown cells within diameter d of f reachable from it through unknown cells, the
-/// passages at least `min_opening` wide. Our reading: unknown cells sealed off by explored
-/// walls (behind an outer wall, inside a pillar) are not beyond this frontier, and a
-/// hypothesis there could never be checked by going to the target.
-std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty, double diameter,
-                                               double min_opening = kMinOpening);
+/// Unknown cells within diameter d of f reachable from the seeds through unknown cells.
+/// Our reading: unknown cells sealed off by explored walls (inside a pillar, far behind an
+/// outer wall) are not beyond this frontier, and a hypothesis there could never be checked
+/// by going to the target. Seeds behind a wall within kSeedRadius of f do count (see the
+/// .cpp for why).
+std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty,
+                                               double diameter);
 
 }  // namespace lookahead::predictor
