@@ -145,6 +145,28 @@ TEST(LookaheadMission, PredictiveMazeRunChecksItsHypotheses) {
   EXPECT_EQ(static_cast<int>(a.lookahead()->records().size()), s.requests);
 }
 
+// Two targets of one selection are predicted in turn; each record names its own target and
+// request time (the second request starts when the first is delivered).
+TEST(LookaheadMapping, EachRecordNamesItsOwnTarget) {
+  const World world(40, 40, 0.05, {0, 0}, World::kFree);
+  LookaheadOptions o;
+  o.enabled = true;
+  LookaheadMapping la(o, world, slam::GridOptions{});
+  slam::OccupancyGrid map;
+  for (double y = 0.025; y < 2; y += 0.05)
+    for (double x = 0.025; x < 2; x += 0.05) map.add_log_odds(map.cell_at(x, y), -1000);
+  la.request(map, {{0.5, 0.5}, {1.5, 1.5}}, 0.0);
+  EXPECT_EQ(la.deliver(0.5), nullptr);  // not due yet
+  la.deliver(1.0);
+  la.deliver(2.0);
+  ASSERT_EQ(la.records().size(), 2u);
+  EXPECT_DOUBLE_EQ(la.records()[0].x, 0.5);
+  EXPECT_DOUBLE_EQ(la.records()[0].time, 0.0);
+  EXPECT_DOUBLE_EQ(la.records()[1].x, 1.5);
+  EXPECT_DOUBLE_EQ(la.records()[1].time, 1.0);
+  EXPECT_EQ(la.records()[0].status, "no_control_point");  // a free square has no corner
+}
+
 TEST(LookaheadMission, OffMeansNoPredictor) {
   const GeneratedWorld maze = make_pslam_maze({});
   MissionOptions o = MissionOptions::defaults();
