@@ -6,9 +6,10 @@
 #   config/study/pslam_maze_full.yaml  the paper's: full coverage against leaving out the
 #                                      predicted regions
 # Run from the repository root after building: bash bench/pslam/maze_study.sh [STUDY.yaml]
+# (LOOKAHEAD=/path/to/lookahead picks another binary.)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 study=${1:-config/study/pslam_maze.yaml}
 out=out/study/$(basename "$study" .yaml)
-./build/lookahead study "$study" --out "$out"
+"${LOOKAHEAD:-./build/lookahead}" study "$study" --out "$out"
 python3 bench/pslam/summarize_runs.py "$out" | tee "$out/pslam_summary.md"

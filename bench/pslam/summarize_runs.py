@@ -36,15 +36,33 @@ def load(folder):
             runs[(j['world'], j['strategy'])].append(j)
     return runs
 
+def pooled(runs):
+    """Over several worlds: each strategy's time and path as a ratio to the first strategy's
+    in the same world and seed (median and range of the paired ratios)."""
+    worlds = sorted({w for w, _ in runs})
+    if len(worlds) < 2: return
+    strategies = sorted({s for _, s in runs})
+    by = {(r['world'], s, r['seed']): r for (w, s), rs in runs.items() for r in rs}
+    print()
+    for s in strategies[1:]:
+        pairs = [(by[w, s, seed], base) for (w, s0, seed), base in by.items()
+                 if s0 == strategies[0] and (w, s, seed) in by]
+        if not pairs: continue
+        for key, name in (('simulated_time_s', 'time'), ('path_length_m', 'path')):
+            q = sorted(a[key] / b[key] for a, b in pairs)
+            med = q[len(q) // 2] if len(q) % 2 else (q[len(q) // 2 - 1] + q[len(q) // 2]) / 2
+            print(f"all worlds: {s} / {strategies[0]} {name}, paired by world and seed: median {med:.2f}, "
+                  f"range {q[0]:.2f}..{q[-1]:.2f}, {sum(v < 1 for v in q)} of {len(q)} shorter")
+
 def main(folder):
     runs = load(folder)
     if not runs: sys.exit(f"{folder}: no run.json found")
     print(f"| world | strategy | runs | end | time [s] | path [m] | explored | with predictions | all predicted cells right | final predicted cells right | ... inside the building | hypotheses | Psi vs world: mean, > 0.4 |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-    all_psi, times = [], defaultdict(list)
+    all_psi, all_solid, times, paths = [], [], defaultdict(list), defaultdict(list)
     for (world, strategy), rs in sorted(runs.items()):
         t = [r['simulated_time_s'] for r in rs]; times[world, strategy] = t
-        p = [r['path_length_m'] for r in rs]
+        p = [r['path_length_m'] for r in rs]; paths[world, strategy] = p
         cov = [r['coverage'] for r in rs]
         pr = [r.get('prediction', {}) for r in rs]
         covp = [x.get('coverage_with_predictions', c) for x, c in zip(pr, cov)]
@@ -52,6 +70,7 @@ def main(folder):
         acc_in = [x['final_predicted_accuracy_inside'] for x in pr if x.get('final_predicted_area_inside_m2', 0) > 0]
         acc_all = [x['cell_accuracy'] for x in pr if x.get('hypotheses', 0) > 0]
         psi = [v for x in pr for v in x.get('psi_world', [])]; all_psi += psi
+        all_solid += [v for x in pr for v in x.get('psi_solid_world', [])]
         ends = ', '.join(sorted({r['status'] for r in rs}))
         f = lambda v, d=0: '%.*f +- %.*f' % (d, mean_std(v)[0], d, mean_std(v)[1]) if v else '-'
         psi_txt = '%.2f, %.0f %%' % (sum(psi) / len(psi), 100 * sum(v > 0.4 for v in psi) / len(psi)) if psi else '-'
@@ -63,11 +82,18 @@ def main(folder):
             a, b = times[world, strategies[0]], times[world, s]
             tt, pp = welch(a, b)
             ma, mb = mean_std(a)[0], mean_std(b)[0]
-            print(f"{world}: {s} vs {strategies[0]}: time {100 * (mb - ma) / ma:+.1f} %, Welch t = {tt:.2f}, p = {pp:.3f}")
+            pa, pb = paths[world, strategies[0]], paths[world, s]
+            pt, ppp = welch(pa, pb)
+            print(f"{world}: {s} vs {strategies[0]}: time {100 * (mb - ma) / ma:+.1f} %, Welch t = {tt:.2f}, p = {pp:.3f}; "
+                  f"path {100 * (mean_std(pb)[0] - mean_std(pa)[0]) / mean_std(pa)[0]:+.1f} %, t = {pt:.2f}, p = {ppp:.3f}")
+    pooled(runs)
     if all_psi:
         print(f"\nall hypotheses: {len(all_psi)}, Psi against the world: mean {sum(all_psi) / len(all_psi):.2f}, "
               f"{sum(v > 0.4 for v in all_psi)} above 0.4 ({100 * sum(v > 0.4 for v in all_psi) / len(all_psi):.0f} %), "
               f"range {min(all_psi):.2f}..{max(all_psi):.2f}")
+    if all_solid:  # the measure before 2026-11-22: every world cell, solid outside included
+        print(f"against every world cell instead (solid beyond the outer walls): mean {sum(all_solid) / len(all_solid):.2f}, "
+              f"{sum(v > 0.4 for v in all_solid)} above 0.4 ({100 * sum(v > 0.4 for v in all_solid) / len(all_solid):.0f} %)")
 
 if __name__ == '__main__':
     main(sys.argv[1] if len(sys.argv) > 1 else 'out/study/pslam_maze')

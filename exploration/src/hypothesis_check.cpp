@@ -2,6 +2,8 @@
 #include "lookahead/exploration/hypothesis_check.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "lookahead/predictor/similarity.hpp"
 
@@ -17,18 +19,42 @@ bool wall_near(const World& world, double x, double y, double tolerance) {
   return false;
 }
 
-// The world over the hypothesis' extent as a grid, for Psi.
-slam::OccupancyGrid world_grid(const slam::HypothesisMap& h, const World& world, slam::CellIndex lo,
+bool is_observable(const World& world, const std::vector<std::uint8_t>& observable, double x,
+                   double y) {
+  if (observable.empty()) return true;
+  const slam::CellIndex c = world.cell_of({x, y});
+  return world.contains(c) && observable[static_cast<std::size_t>(c.y) * world.width() + c.x] != 0;
+}
+
+// The world over the hypothesis' extent as a grid, for Psi: the map a complete exploration
+// would build. Cells no robot observes stay unknown, so they hold no wall: the paper scored
+// its hypotheses against the final built map (sec. V-A.2), which has no walls beyond the
+// outer ones or inside thick walls, while our worlds are solid there (a KTH plan's outside,
+// everything beyond a generated floor's raster). Scored against those solid cells, a right
+// hypothesis that reaches past an unseen outer wall looked wrong.
+slam::OccupancyGrid world_grid(const slam::HypothesisMap& h, const World& world,
+                               const std::vector<std::uint8_t>& observable, slam::CellIndex lo,
                                slam::CellIndex hi) {
   slam::OccupancyGrid g(h.grid.options());
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {
       double cx = 0, cy = 0;
       g.cell_center({x, y}, cx, cy);
+      if (!is_observable(world, observable, cx, cy)) continue;
       g.add_log_odds({x, y}, world.is_occupied(cx, cy) ? 3000 : -1000);
     }
   }
   return g;
+}
+
+predictor::SimilarityScore psi_against(const predictor::CoarseOccupancy& predicted,
+                                       const slam::OccupancyGrid& truth,
+                                       const predictor::RegionSamples& region,
+                                       double occupied_threshold, double similarity_resolution,
+                                       int similarity_tolerance_cells) {
+  const predictor::CoarseOccupancy coarse(truth, similarity_resolution, occupied_threshold,
+                                          similarity_tolerance_cells);
+  return predictor::similarity(predicted, coarse, region, {});
 }
 
 }  // namespace
@@ -37,9 +63,10 @@ bool prediction_matches_world(bool predicted_wall, const World& world, double x,
   return predicted_wall ? wall_near(world, x, y, wall_tolerance) : !world.is_occupied(x, y);
 }
 
-HypothesisCheck check_against_world(const slam::HypothesisMap& h, const World& world, double occupied_threshold,
-                                    double wall_tolerance, double similarity_resolution,
-                                    int similarity_tolerance_cells) {
+HypothesisCheck check_against_world(const slam::HypothesisMap& h, const World& world,
+                                    const std::vector<std::uint8_t>& observable,
+                                    double occupied_threshold, double wall_tolerance,
+                                    double similarity_resolution, int similarity_tolerance_cells) {
   HypothesisCheck check;
   slam::CellIndex lo, hi;
   if (!h.grid.known_bounds(lo, hi)) return check;
@@ -64,9 +91,15 @@ HypothesisCheck check_against_world(const slam::HypothesisMap& h, const World& w
       region.y.push_back(y);
     }
   }
-  const predictor::CoarseOccupancy truth(world_grid(h, world, lo, hi), res, occupied_threshold,
-                                         similarity_tolerance_cells);
-  check.psi = predictor::similarity(predicted, truth, region, {}).psi;
+  const predictor::SimilarityScore score =
+      psi_against(predicted, world_grid(h, world, observable, lo, hi), region, occupied_threshold,
+                  res, similarity_tolerance_cells);
+  check.psi = score.psi;
+  check.predicted_walls = score.target_occupied;
+  check.world_walls = score.reference_occupied;
+  check.psi_solid_world = psi_against(predicted, world_grid(h, world, {}, lo, hi), region,
+                                      occupied_threshold, res, similarity_tolerance_cells)
+                              .psi;
   return check;
 }
 

@@ -68,7 +68,8 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)) {
   if (!reachable_.start_valid) throw std::invalid_argument("mission: the start pose is in collision");
   if (options_.lookahead.enabled) {
-    lookahead_ = std::make_unique<LookaheadMapping>(options_.lookahead, world_, options_.slam.grid);
+    lookahead_ = std::make_unique<LookaheadMapping>(options_.lookahead, world_, options_.slam.grid,
+                                                    observable_cells(world_, reachable_));
   }
   if (options_.pose_source == PoseSource::kSlam) rbpf_ = std::make_unique<slam::Rbpf>(options_.slam);
   last_refresh_pose_ = start;

@@ -63,6 +63,8 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
   v("skip_confidence", o.skip_confidence, "predictive strategy: hypotheses with Psi >= this may be skipped");
   v("skip_share", o.skip_share, "... skip a frontier when this share of its far side is predicted");
   v("targets_per_selection", o.targets_per_selection, "frontiers predicted per selection: the target, then the nearest");
+  v("pictures", o.pictures,
+    "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");
   v("surroundings_diameter", o.predictor.surroundings_diameter, "d: surroundings S_f and prediction range [m]");
   v("control_point_range", o.predictor.control_point_range, "control point: nearest corner within [m]");
   v("similarity_threshold", o.predictor.similarity_threshold, "Psi for a hypothesis, 0.4..0.7");

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "lookahead/exploration/hypothesis_pictures.hpp"
 #include "lookahead/exploration/line_plot.hpp"
 #include "lookahead/exploration/mission_picture.hpp"
 #include "lookahead/slam/io/map_io.hpp"
@@ -44,19 +45,55 @@ MissionSummary summarize(const Mission& m, const std::string& world_name, double
 
 namespace {
 
+// Each hypothesis with where it came from and how the world scored it (for diagnosis).
+nlohmann::json hypotheses_json(const std::vector<PredictionRecord>& records) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const PredictionRecord& r : records) {
+    nlohmann::json j{{"time_s", r.time},
+                     {"target", {r.x, r.y}},
+                     {"psi", r.psi},
+                     {"area_m2", r.area},
+                     {"psi_world", r.truth.psi},
+                     {"psi_solid_world", r.truth.psi_solid_world},
+                     {"cells", r.truth.cells},
+                     {"cells_right", r.truth.correct},
+                     {"predicted_wall_samples", r.truth.predicted_walls},
+                     {"world_wall_samples", r.truth.world_walls}};
+    if (r.alignment) {
+      j["control_point"] = {r.alignment->control.x, r.alignment->control.y};
+      j["reference_point"] = {r.alignment->reference.x, r.alignment->reference.y};
+      j["theta"] = r.alignment->reference_to_target.theta;
+    }
+    out.push_back(j);
+  }
+  return out;
+}
+
 nlohmann::json prediction_json(const PredictionSummary& p) {
-  return {{"requests", p.requests}, {"hypotheses", p.hypotheses}, {"no_control_point", p.no_control_point},
-          {"no_match", p.no_match}, {"psi_world", p.psi_world}, {"mean_psi_world", p.mean_psi_world},
-          {"share_psi_world_above_0_4", p.share_psi_world_above_04}, {"predicted_area_m2", p.predicted_area},
-          {"cell_accuracy", p.cell_accuracy}, {"mean_prediction_s", p.mean_seconds},
-          {"max_prediction_s", p.max_seconds}, {"final_predicted_area_m2", p.final_predicted_area},
+  return {{"hypothesis_list", hypotheses_json(p.hypothesis_records)},
+          {"requests", p.requests},
+          {"hypotheses", p.hypotheses},
+          {"no_control_point", p.no_control_point},
+          {"no_match", p.no_match},
+          {"psi_world", p.psi_world},
+          {"psi_solid_world", p.psi_solid_world},
+          {"mean_psi_world", p.mean_psi_world},
+          {"share_psi_world_above_0_4", p.share_psi_world_above_04},
+          {"predicted_area_m2", p.predicted_area},
+          {"cell_accuracy", p.cell_accuracy},
+          {"mean_prediction_s", p.mean_seconds},
+          {"max_prediction_s", p.max_seconds},
+          {"final_predicted_area_m2", p.final_predicted_area},
           {"final_predicted_accuracy", p.final_predicted_accuracy},
           {"final_predicted_area_inside_m2", p.final_predicted_area_inside},
           {"final_predicted_accuracy_inside", p.final_predicted_accuracy_inside},
           {"coverage_with_predictions", p.coverage_with_predictions},
           {"ended_on_predictions", p.ended_on_predictions},
-          {"filter", {{"hypotheses", p.filter_hypotheses}, {"predicted_updates", p.filter_predicted_updates},
-                      {"used", p.filter_used}, {"rejected_by_hit_ratio", p.filter_rejected}}}};
+          {"filter",
+           {{"hypotheses", p.filter_hypotheses},
+            {"predicted_updates", p.filter_predicted_updates},
+            {"used", p.filter_used},
+            {"rejected_by_hit_ratio", p.filter_rejected}}}};
 }
 
 }  // namespace
@@ -114,6 +151,8 @@ void write_mission_outputs(const Mission& m, const MissionSummary& s, const std:
   for (std::size_t i = 0; i < m.estimated_path().size(); ++i) traj.push_back({m.options().laser.period() + dt * static_cast<double>(i), m.estimated_path()[i]});
   slam::write_trajectory(dir + "/trajectory.txt", traj);
   std::ofstream(dir + "/run.json") << to_json(s);
+  if (m.lookahead() && m.lookahead()->options().pictures)
+    write_hypothesis_pictures(*m.lookahead(), m.world(), dir + "/predictions");
 }
 
 }  // namespace lookahead::exploration

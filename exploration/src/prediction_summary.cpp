@@ -20,6 +20,8 @@ void summarize_records(const std::vector<PredictionRecord>& records, PredictionS
     if (r.status != "predicted") continue;
     ++s.hypotheses;
     s.psi_world.push_back(r.truth.psi);
+    s.psi_solid_world.push_back(r.truth.psi_solid_world);
+    s.hypothesis_records.push_back(r);
     s.predicted_area += r.area;
     cells += r.truth.cells;
     correct += r.truth.correct;
@@ -31,29 +33,11 @@ void summarize_records(const std::vector<PredictionRecord>& records, PredictionS
   s.cell_accuracy = cells ? static_cast<double>(correct) / static_cast<double>(cells) : 0.0;
 }
 
-// Cells of the world within `margin` of its reachable area (what a robot could observe).
-std::vector<std::uint8_t> observable_cells(const World& world, const ReachableArea& area, double margin) {
-  const int w = world.width(), h = world.height();
-  std::vector<std::uint8_t> out(area.reachable.size(), 0);
-  if (area.reachable.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h)) return out;
-  const int r = static_cast<int>(std::ceil(margin / world.resolution()));
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      if (!area.reachable[static_cast<std::size_t>(y * w + x)]) continue;
-      for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx)
-          if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h)
-            out[static_cast<std::size_t>((y + dy) * w + x + dx)] = 1;
-    }
-  }
-  return out;
-}
-
 // The look-ahead map where the robot's map is still unknown, against the world.
 void summarize_final_map(const Mission& m, const PredictedMap& pm, double occupied, PredictionSummary& s) {
   slam::CellIndex lo, hi;
   if (!pm.cells().known_bounds(lo, hi)) return;
-  const std::vector<std::uint8_t> observable = observable_cells(m.world(), m.reachable(), kObservableMargin);
+  const std::vector<std::uint8_t> observable = observable_cells(m.world(), m.reachable());
   const auto inside = [&](double x, double y) {
     const slam::CellIndex c = m.world().cell_of({x, y});
     if (c.x < 0 || c.y < 0 || c.x >= m.world().width() || c.y >= m.world().height()) return false;

@@ -77,4 +77,23 @@ ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& sta
   return r;
 }
 
+std::vector<std::uint8_t> observable_cells(const World& world, const ReachableArea& area,
+                                           double margin) {
+  const int w = world.width(), h = world.height();
+  std::vector<std::uint8_t> out(area.reachable.size(), 0);
+  if (area.reachable.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h))
+    return out;
+  const int r = static_cast<int>(std::ceil(margin / world.resolution()));
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!area.reachable[static_cast<std::size_t>(y * w + x)]) continue;
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx)
+          if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h)
+            out[static_cast<std::size_t>((y + dy) * w + x + dx)] = 1;
+    }
+  }
+  return out;
+}
+
 }  // namespace lookahead::exploration

@@ -40,11 +40,15 @@ std::vector<slam::PicturePoints> predicted_cell_overlays(const slam::OccupancyGr
 }
 
 void write_prediction_picture(const std::string& png_path, const slam::OccupancyGrid& map,
-                              const Prediction& p, const PredictorOptions& o) {
+                              const Prediction& p, const PredictorOptions& o,
+                              const std::vector<slam::PicturePoints>& extra) {
   const double r = o.surroundings_diameter / 2;
   std::vector<slam::PicturePath> paths{circle(p.target_x, p.target_y, r, {230, 120, 0}, "target region S_f")};
-  std::vector<slam::PicturePoints> points;
-  if (p.hypothesis) points = predicted_cell_overlays(p.hypothesis->grid, o.features.occupied_threshold);
+  std::vector<slam::PicturePoints> points = extra;  // under the hypothesis
+  if (p.hypothesis) {
+    for (auto& layer : predicted_cell_overlays(p.hypothesis->grid, o.features.occupied_threshold))
+      points.push_back(layer);
+  }
   slam::PicturePoints corners{{}, {150, 60, 170}, "corner features", 3, false};
   for (const Corner& c : p.features.corners) corners.points.push_back({c.x, c.y});
   points.push_back(corners);

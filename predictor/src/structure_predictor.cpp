@@ -35,41 +35,6 @@ const char* to_string(Prediction::Status status) {
   return "?";
 }
 
-std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty, double diameter) {
-  const double r = diameter / 2;
-  const slam::CellIndex t = map.cell_at(tx, ty);
-  const int r_cells = static_cast<int>(std::ceil(r / map.resolution()));
-  const int seed_cells = static_cast<int>(std::ceil(kSeedRadius / map.resolution()));
-  const int side = 2 * r_cells + 1;
-  std::vector<char> seen(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
-  const auto inside = [&](slam::CellIndex c) {
-    const int dx = c.x - t.x, dy = c.y - t.y;
-    return dx * dx + dy * dy <= r_cells * r_cells;
-  };
-  const auto mark = [&](slam::CellIndex c) -> char& {
-    return seen[static_cast<std::size_t>((c.y - t.y + r_cells) * side + (c.x - t.x + r_cells))];
-  };
-  std::vector<slam::CellIndex> region;
-  for (int dy = -seed_cells; dy <= seed_cells; ++dy) {
-    for (int dx = -seed_cells; dx <= seed_cells; ++dx) {
-      const slam::CellIndex c{t.x + dx, t.y + dy};
-      if (dx * dx + dy * dy > seed_cells * seed_cells || map.is_known(c) || mark(c)) continue;
-      mark(c) = 1;
-      region.push_back(c);
-    }
-  }
-  for (std::size_t i = 0; i < region.size(); ++i) {  // breadth-first through unknown cells
-    const slam::CellIndex c = region[i];
-    for (const slam::CellIndex n : {slam::CellIndex{c.x + 1, c.y}, slam::CellIndex{c.x - 1, c.y},
-                                    slam::CellIndex{c.x, c.y + 1}, slam::CellIndex{c.x, c.y - 1}}) {
-      if (!inside(n) || mark(n) || map.is_known(n)) continue;
-      mark(n) = 1;
-      region.push_back(n);
-    }
-  }
-  return region;
-}
-
 std::shared_ptr<slam::HypothesisMap> make_hypothesis(const slam::OccupancyGrid& map, double tx, double ty,
                                                      double diameter, const slam::Pose2& reference_to_target) {
   auto h = std::make_shared<slam::HypothesisMap>();

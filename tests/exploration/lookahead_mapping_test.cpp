@@ -10,6 +10,7 @@
 #include "lookahead/exploration/mission_report.hpp"
 #include "lookahead/exploration/predicted_map.hpp"
 #include "lookahead/exploration/prediction_aware_strategy.hpp"
+#include "lookahead/exploration/world_reachability.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -85,10 +86,39 @@ TEST(HypothesisCheck, CountsCellsTheWorldConfirms) {
     h.grid.add_log_odds(h.grid.cell_at(x, 0.525), -1000); // free below it, right
     h.grid.add_log_odds(h.grid.cell_at(x, 1.525), 3000);  // a wall that is not there
   }
-  const HypothesisCheck c = check_against_world(h, world, 0.65);
+  const HypothesisCheck c = check_against_world(h, world, {}, 0.65);
   EXPECT_EQ(c.cells, 120u);
   EXPECT_EQ(c.correct, 80u);
   EXPECT_NEAR(c.psi, 0.67, 0.05);  // half the predicted walls are real: 2 * 1 / (2 + 1)
+}
+
+// A right hypothesis of a room whose outer wall was not seen yet reaches past that wall; a
+// built map has nothing there, the world's raster is solid. Scored over what a robot can
+// observe, the free space predicted beyond the wall costs nothing; over every world cell it
+// counted as missed walls.
+TEST(HypothesisCheck, CellsNoRobotObservesHoldNoWalls) {
+  World world(100, 40, 0.05, {0, 0}, World::kFree);         // 5 m x 2 m; beyond the raster: solid
+  world.fill_rect({0, 1.8}, {5.0, 2.0}, World::kOccupied);  // the outer wall, 0.2 m thick
+  slam::HypothesisMap h;
+  for (double x = 0.525; x < 2.5; x += 0.05) {
+    h.grid.add_log_odds(h.grid.cell_at(x, 1.775), -1000);  // free before the wall, right
+    h.grid.add_log_odds(h.grid.cell_at(x, 1.825), 3000);   // the wall's face, right
+    for (double y = 2.025; y < 2.5; y += 0.05)
+      h.grid.add_log_odds(h.grid.cell_at(x, y), -1000);  // beyond
+  }
+  const std::vector<std::uint8_t> observable =
+      observable_cells(world, reachable_free_area(world, {2.5, 1.0}, 0.1));
+  EXPECT_EQ(observable[static_cast<std::size_t>(37 * world.width() + 50)],
+            1);  // the wall's face (y 1.85)
+  EXPECT_EQ(observable[static_cast<std::size_t>(39 * world.width() + 50)],
+            0);  // its far side (y 1.95)
+  const HypothesisCheck seen = check_against_world(h, world, observable, 0.65);
+  const HypothesisCheck solid = check_against_world(h, world, {}, 0.65);
+  EXPECT_GT(seen.psi, 0.9);
+  EXPECT_LT(solid.psi, 0.4);  // the solid rows beyond count as walls the hypothesis missed
+  EXPECT_DOUBLE_EQ(seen.psi_solid_world, solid.psi);
+  EXPECT_LT(seen.world_walls, solid.world_walls);
+  EXPECT_EQ(seen.predicted_walls, solid.predicted_walls);
 }
 
 TEST(LookaheadMission, PredictiveMazeRunChecksItsHypotheses) {
@@ -113,6 +143,28 @@ TEST(LookaheadMission, PredictiveMazeRunChecksItsHypotheses) {
   }
   EXPECT_EQ(a.statistics().collisions, 0);
   EXPECT_EQ(static_cast<int>(a.lookahead()->records().size()), s.requests);
+}
+
+// Two targets of one selection are predicted in turn; each record names its own target and
+// request time (the second request starts when the first is delivered).
+TEST(LookaheadMapping, EachRecordNamesItsOwnTarget) {
+  const World world(40, 40, 0.05, {0, 0}, World::kFree);
+  LookaheadOptions o;
+  o.enabled = true;
+  LookaheadMapping la(o, world, slam::GridOptions{});
+  slam::OccupancyGrid map;
+  for (double y = 0.025; y < 2; y += 0.05)
+    for (double x = 0.025; x < 2; x += 0.05) map.add_log_odds(map.cell_at(x, y), -1000);
+  la.request(map, {{0.5, 0.5}, {1.5, 1.5}}, 0.0);
+  EXPECT_EQ(la.deliver(0.5), nullptr);  // not due yet
+  la.deliver(1.0);
+  la.deliver(2.0);
+  ASSERT_EQ(la.records().size(), 2u);
+  EXPECT_DOUBLE_EQ(la.records()[0].x, 0.5);
+  EXPECT_DOUBLE_EQ(la.records()[0].time, 0.0);
+  EXPECT_DOUBLE_EQ(la.records()[1].x, 1.5);
+  EXPECT_DOUBLE_EQ(la.records()[1].time, 1.0);
+  EXPECT_EQ(la.records()[0].status, "no_control_point");  // a free square has no corner
 }
 
 TEST(LookaheadMission, OffMeansNoPredictor) {

@@ -184,6 +184,27 @@ TEST(UnexploredRegion, StopsAtExploredWalls) {
   EXPECT_FALSE(contains(1.0, 1.0));  // inside the sealed box: unknown, but not beyond f
 }
 
+// A target 0.3 m in front of a seen wall with unknown space behind it: the cells behind it
+// within kSeedRadius seed the region (in the maze, the next corridor behind a pillar's
+// wall; unexplored_region.cpp says why this stays), but nothing farther than d / 2.
+TEST(UnexploredRegion, SeedsBehindAWallNearTheTargetCount) {
+  slam::OccupancyGrid map;
+  for (double x = 0.025; x < 9; x += 0.05) {
+    if (x < 4)
+      for (double y = 0.025; y < 2; y += 0.05) map.add_log_odds(map.cell_at(x, y), -1000);  // free
+    map.add_log_odds(map.cell_at(x, 2.025), 3000);  // the wall, y = 2
+  }
+  const std::vector<slam::CellIndex> region = unexplored_region(map, 2.0, 1.7, 8.0);
+  const auto contains = [&](double x, double y) {
+    const slam::CellIndex c = map.cell_at(x, y);
+    return std::find(region.begin(), region.end(), c) != region.end();
+  };
+  EXPECT_TRUE(contains(2.0, 2.3));   // behind the wall, 0.6 m from f: a seed
+  EXPECT_TRUE(contains(2.0, 5.5));   // reached from it
+  EXPECT_FALSE(contains(2.0, 6.0));  // 4.3 m from f: beyond d / 2
+  EXPECT_FALSE(contains(2.0, 1.0));  // explored
+}
+
 TEST(FrontierAhead, FindsTheNearestFrontierInTheHeadingCone) {
   slam::OccupancyGrid map;
   for (double y = -2; y < 2; y += 0.05)

@@ -5,7 +5,9 @@
 // Every prediction is recorded and checked against the true world.
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -36,6 +38,10 @@ struct LookaheadOptions {
   /// other frontier goals (the paper's extension "predict several possible targets",
   /// sec. II-A). They queue on the worker, one delivered per latency period.
   int targets_per_selection = 4;
+  /// Keep the map and the prediction of every hypothesis and write one picture each into
+  /// the run folder (predictions/NNN.png, with the true walls of the target region): for
+  /// finding out why a hypothesis scored low against the world. Costs memory; off by default.
+  bool pictures = false;
 };
 
 struct PredictionRecord {
@@ -46,11 +52,22 @@ struct PredictionRecord {
   double area = 0.0;            ///< predicted area [m^2]
   double seconds = 0.0;         ///< wall time of the prediction
   HypothesisCheck truth;        ///< of the hypothesis against the world (when predicted)
+  std::optional<predictor::Alignment> alignment;  ///< the best registration, when one was scored
+};
+
+/// One hypothesis with the map it was made on (kept with LookaheadOptions::pictures).
+struct HypothesisSnapshot {
+  std::size_t record = 0;  ///< index into LookaheadMapping::records()
+  slam::OccupancyGrid map;
+  predictor::Prediction prediction;
 };
 
 class LookaheadMapping {
  public:
-  LookaheadMapping(const LookaheadOptions& options, const World& world, const slam::GridOptions& grid);
+  /// `observable`: the world cells a robot can observe (observable_cells()), over which each
+  /// hypothesis is scored; empty: every cell.
+  LookaheadMapping(const LookaheadOptions& options, const World& world,
+                   const slam::GridOptions& grid, std::vector<std::uint8_t> observable = {});
 
   /// A new selection: predict around each target in turn, on a copy of `map` (copy-on-write:
   /// cheap). Targets still queued from the previous selection are dropped.
@@ -62,10 +79,14 @@ class LookaheadMapping {
   [[nodiscard]] const PredictedMap& predicted() const { return predicted_; }
   [[nodiscard]] const std::vector<PredictionRecord>& records() const { return records_; }
   [[nodiscard]] const LookaheadOptions& options() const { return options_; }
+  [[nodiscard]] const std::vector<HypothesisSnapshot>& snapshots() const { return snapshots_; }
 
  private:
+  std::vector<HypothesisSnapshot> snapshots_;
+  slam::OccupancyGrid pending_map_;  ///< the map of the pending request
   LookaheadOptions options_;
   const World& world_;
+  std::vector<std::uint8_t> observable_;
   predictor::PredictionWorker worker_;
   PredictedMap predicted_;
   std::vector<PredictionRecord> records_;

@@ -8,13 +8,16 @@
 #include <vector>
 
 #include "lookahead/exploration/mission.hpp"
+#include "lookahead/exploration/world_reachability.hpp"
 
 namespace lookahead::exploration {
 
 struct PredictionSummary {
   bool enabled = false;
   int requests = 0, hypotheses = 0, no_control_point = 0, no_match = 0;
-  std::vector<double> psi_world;     ///< per hypothesis: Psi against the true world
+  std::vector<double> psi_world;        ///< per hypothesis: Psi against the observable true world
+  std::vector<double> psi_solid_world;  ///< ... against every world cell (HypothesisCheck)
+  std::vector<PredictionRecord> hypothesis_records;  ///< the requests that made a hypothesis
   double mean_psi_world = 0.0;
   double share_psi_world_above_04 = 0.0;
   double predicted_area = 0.0;       ///< summed over hypotheses [m^2]
@@ -34,8 +37,6 @@ struct PredictionSummary {
   bool ended_on_predictions = false;
   std::size_t filter_hypotheses = 0, filter_predicted_updates = 0, filter_used = 0, filter_rejected = 0;
 };
-
-constexpr double kObservableMargin = 0.15;  ///< [m]: a wall's thickness beyond the free space
 
 PredictionSummary summarize_predictions(const Mission& mission);
 

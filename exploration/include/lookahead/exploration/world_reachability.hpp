@@ -30,4 +30,13 @@ struct ReachableArea {
 ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& start,
                                   double robot_radius);
 
+/// [m]: how far beyond the reachable free space a wall is still seen (its surface layer).
+constexpr double kObservableMargin = 0.15;
+
+/// Cells of the world within `margin` [m] of its reachable area: what a robot can observe, the
+/// map a complete exploration builds. Row-major like World::cells(); 1 = observable. Outside
+/// it lie the insides of thick walls and pillars and the solid space beyond the outer walls.
+std::vector<std::uint8_t> observable_cells(const World& world, const ReachableArea& area,
+                                           double margin = kObservableMargin);
+
 }  // namespace lookahead::exploration

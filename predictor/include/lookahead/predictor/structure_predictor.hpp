@@ -14,6 +14,7 @@
 #include "lookahead/predictor/predictor_options.hpp"
 #include "lookahead/predictor/registration.hpp"
 #include "lookahead/predictor/similarity.hpp"
+#include "lookahead/predictor/unexplored_region.hpp"
 #include "lookahead/slam/rbpf/hypothesis.hpp"
 
 namespace lookahead::predictor {
@@ -47,16 +48,8 @@ Prediction predict_structure(const slam::OccupancyGrid& map, double tx, double t
 Prediction predict_structure(const slam::OccupancyGrid& map, const ExploredMapModel& model, double tx, double ty,
                              const PredictorOptions& options);
 
-/// The unexplored region beyond the target frontier: unknown cells within diameter d of the
-/// target reachable from it through unknown cells (seeded within kSeedRadius of it). Our
-/// reading of "the unexplored parts in the target region" (sec. III-C): unknown cells
-/// sealed off by explored walls (behind an outer wall, inside a pillar) are not beyond
-/// this frontier, and a hypothesis there could never be checked by going to the target.
-constexpr double kSeedRadius = 1.0;  ///< [m]
-std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty, double diameter);
-
-/// The hypothesis of sec. III-C: every cell of the unexplored region whose aligned
-/// reference cell is explored takes that cell's occupancy.
+/// The hypothesis of sec. III-C: every cell of the unexplored region (unexplored_region()) whose
+/// aligned reference cell is explored takes that cell's occupancy.
 std::shared_ptr<slam::HypothesisMap> make_hypothesis(const slam::OccupancyGrid& map, double tx, double ty,
                                                      double diameter, const slam::Pose2& reference_to_target);
 
