@@ -68,7 +68,7 @@ struct FusionOptions {
   /// Beyond the paper: after each fusion, re-solve the global map over all local maps by
   /// Gauss-Newton (every Jacobian at the current solution) instead of keeping the EKF's
   /// once-linearised result (see global_map.cpp).
-  bool relinearise = false;
+  bool relinearise = true;
   int relinearise_iterations = 10;  ///< Gauss-Newton steps per fusion, at most
 };
 

@@ -36,8 +36,10 @@ class MapJoining {
   /// covariance (the inverse of the information at the solution, marginalised).
   void marginal(Eigen::VectorXd& mean, Eigen::MatrixXd& covariance) const;
 
-  [[nodiscard]] std::size_t poses() const { return poses_.size(); }
+  [[nodiscard]] std::size_t poses() const { return poses_.size(); }  ///< v_0 ... v_K
   [[nodiscard]] std::size_t features() const { return features_.size(); }
+  [[nodiscard]] const Pose2& pose(std::size_t k) const { return poses_[k]; }
+  [[nodiscard]] const Eigen::Vector2d& feature(std::size_t k) const { return features_[k]; }
 
  private:
   struct Factor {
