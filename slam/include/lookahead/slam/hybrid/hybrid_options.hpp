@@ -67,7 +67,7 @@ struct FusionOptions {
   bool first_estimate_jacobians = false;
   /// Beyond the paper: after each fusion, re-solve the global map over all local maps by
   /// Gauss-Newton (every Jacobian at the current solution) instead of keeping the EKF's
-  /// once-linearised result (see global_map.cpp).
+  /// once-linearised result (see global_map.cpp). On: Table 1 measured better (README).
   bool relinearise = true;
   int relinearise_iterations = 10;  ///< Gauss-Newton steps per fusion, at most
 };
