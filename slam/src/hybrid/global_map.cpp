@@ -130,10 +130,12 @@ FusionReport GlobalMap::fuse(const GaussianMap& local) {
 // stayed: the information of local maps linearised at different points adds up to heading
 // information no local map holds (the EKF-SLAM inconsistency of Bailey et al. 2006, sec.
 // 5.4 of the paper), while each local map alone was consistent (joint NEES per dof at its
-// fusion against the truth: median 1.11 over 582 fusions of 15 failed trials). Re-solving all local maps together by Gauss-Newton (iterated
-// SLSJF, Huang, Wang & Dissanayake 2008) evaluates every Jacobian at one point, the current
-// solution, so the joined information keeps the rotation structure of each local map.
-// The pairs are those the EKF step chose (JCBB); the EKF result seeds the solver.
+// fusion against the truth: median 1.11 over 582 fusions of 15 failed trials). Re-solving
+// all local maps together by Gauss-Newton (iterated SLSJF, Huang, Wang & Dissanayake 2008)
+// evaluates every Jacobian at one point, the current solution, so the joined information
+// keeps the rotation structure of each local map. The pairs are those the EKF step chose
+// (JCBB); the EKF result seeds the solver. Measured: Table 1 HYBRID 92/86/89/86 % ->
+// 96/95/93/83 % over the four clutter levels (README).
 void GlobalMap::relinearise(const GaussianMap& local, const std::vector<int>& match, std::size_t old_features) {
   std::vector<Eigen::Vector2d> new_guess;
   for (std::size_t k = old_features; k < features(); ++k) new_guess.push_back(feature(k));
