@@ -123,8 +123,8 @@ FusionReport GlobalMap::fuse(const GaussianMap& local) {
   return report;
 }
 
-// Beyond the paper: the EKF above linearises g once, at the origin's estimate of the
-// moment, and never again. In the failed trials of Table 1 that estimate's heading was off
+// Deviation (beyond the paper): the EKF above linearises g once, at the origin's estimate
+// of the moment, and never again. In the failed trials of Table 1 that estimate's heading was off
 // by 0.04-0.07 rad (1-2 std) from the first fusion on, and the global heading std then fell
 // threefold around the loop (trial 18 at (0.7, 0.02): 0.024 -> 0.009 rad) while the error
 // stayed: the information of local maps linearised at different points adds up to heading
