@@ -47,6 +47,8 @@ void visit_sections(HybridConfig& c, V&& v) {
   v("jcbb_max_nodes", f.fusion.jcbb_max_nodes, "cap on the JCBB search");
   v("association_sigma", f.fusion.association_sigma, "std added to pair differences in the association test [m]");
   v("first_estimate_jacobians", f.fusion.first_estimate_jacobians, "linearise g at the origin's first estimate (tried; README)");
+  v("relinearise", f.fusion.relinearise, "re-solve all local maps by Gauss-Newton at each fusion");
+  v("relinearise_iterations", f.fusion.relinearise_iterations, "Gauss-Newton steps per fusion, at most");
   SimulationOptions& s = c.simulation;
   v.section("simulation");
   v("world_size", s.world_size, "side of the square world [m]");
@@ -102,6 +104,7 @@ HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& sou
     const FeatureExistence check(c.filter.existence);
     if (c.filter.fastslam.particles < 1) throw std::invalid_argument("fastslam.particles must be >= 1");
     if (!(c.filter.fusion.period > 0.0)) throw std::invalid_argument("fusion.period must be > 0");
+    if (c.filter.fusion.relinearise_iterations < 1) throw std::invalid_argument("fusion.relinearise_iterations must be >= 1");
     if (c.study.alphas.size() != c.study.betas.size()) throw std::invalid_argument("study.alphas and study.betas differ in length");
     if (!(c.simulation.dt > 0.0)) throw std::invalid_argument("simulation.dt must be > 0");
     validate(c.scan_landmarks);

@@ -37,8 +37,8 @@ bool SubmapFilter::fusion_due() {
 }
 
 void SubmapFilter::fuse_now() {
-  const GaussianMap local = front_->to_gaussian(options_.existence.fuse_threshold);
-  last_report_ = global_.fuse(local);
+  last_local_ = front_->to_gaussian(options_.existence.fuse_threshold);
+  last_report_ = global_.fuse(last_local_);
   associated_ += last_report_.associated;
   front_->restart();
   age_ = 0.0;

@@ -53,6 +53,8 @@ TEST(HybridConfig, LogConfigRefusesTheSimulationFileAndKeepsLogDefaults) {
   EXPECT_EQ(csail.filter.fastslam.particles, 100);
   EXPECT_DOUBLE_EQ(csail.filter.existence.alpha, 0.5);
   EXPECT_DOUBLE_EQ(csail.scan_landmarks.split_tolerance, 0.12);
+  EXPECT_TRUE(log_base.filter.fusion.relinearise);  // the default back-end re-solves ...
+  EXPECT_FALSE(csail.filter.fusion.relinearise);    // ... csail.yaml keeps the EKF (README)
 }
 
 TEST(HybridConfig, BadInputNamesFileLineKeyAndValue) {

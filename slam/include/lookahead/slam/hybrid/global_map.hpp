@@ -7,6 +7,8 @@
 //  3. fusion of each pair by the zero-noise observation z_f = theta_1 - theta_2 = 0
 //     (eq. 10) and removal of one of the two identical features,
 //  4. the old origin is replaced by the new vehicle pose: the next local map's origin.
+// With `fusion.relinearise` (beyond the paper) steps 1-3 still choose the pairs, and the
+// map is then the Gauss-Newton solution over all local maps (map_joining.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -14,6 +16,7 @@
 
 #include "lookahead/slam/hybrid/gaussian_map.hpp"
 #include "lookahead/slam/hybrid/hybrid_options.hpp"
+#include "lookahead/slam/hybrid/map_joining.hpp"
 
 namespace lookahead::slam::hybrid {
 
@@ -55,6 +58,7 @@ class GlobalMap {
   /// Returns the joint NIS of the pairs.
   double fuse_pairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
   void remove_states(std::vector<Eigen::Index> indices);
+  void relinearise(const GaussianMap& local, const std::vector<int>& match, std::size_t old_features);
 
   FusionOptions options_;
   Eigen::VectorXd mean_;
@@ -62,6 +66,9 @@ class GlobalMap {
   /// The origin v- as it entered the map (augmented, before its fusion corrected it): the
   /// point at which g is linearised when `first_estimate_jacobians` is set.
   Pose2 first_origin_;
+  /// With `relinearise`: every local map so far, re-solved at each fusion; mean_ and
+  /// covariance_ then hold its newest origin and features.
+  MapJoining joining_;
 };
 
 /// g(v, x_L): the local state [v_L, m_1 ... m_K] expressed in the global frame, and its

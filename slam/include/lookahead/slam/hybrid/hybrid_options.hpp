@@ -65,6 +65,11 @@ struct FusionOptions {
   /// Linearise g at the origin's first estimate (its value when it entered the map), not at
   /// its value after the fusion corrected it (see global_map.cpp). Off: measured no better.
   bool first_estimate_jacobians = false;
+  /// Beyond the paper: after each fusion, re-solve the global map over all local maps by
+  /// Gauss-Newton (every Jacobian at the current solution) instead of keeping the EKF's
+  /// once-linearised result (see global_map.cpp). On: Table 1 measured better (README).
+  bool relinearise = true;
+  int relinearise_iterations = 10;  ///< Gauss-Newton steps per fusion, at most
 };
 
 /// Process noise every filter assumes at least, on top of the control's own model.

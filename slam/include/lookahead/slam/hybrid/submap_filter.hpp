@@ -42,6 +42,8 @@ class SubmapFilter {
   [[nodiscard]] int delayed_fusions() const { return delayed_; }
   [[nodiscard]] int associated_at_fusion() const { return associated_; }
   [[nodiscard]] const FusionReport& last_fusion() const { return last_report_; }
+  /// The local map handed over at the last fusion, in its own frame (diagnostic traces).
+  [[nodiscard]] const GaussianMap& last_local_map() const { return last_local_; }
 
  private:
   [[nodiscard]] bool fusion_due();
@@ -55,6 +57,7 @@ class SubmapFilter {
   int fusions_ = 0, delayed_ = 0, associated_ = 0;
   bool delaying_ = false;
   FusionReport last_report_;
+  GaussianMap last_local_;
 };
 
 }  // namespace lookahead::slam::hybrid
