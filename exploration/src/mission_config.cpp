@@ -62,6 +62,7 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
   v("latency", o.latency, "a prediction is delivered this long after its request [s, simulated]");
   v("skip_confidence", o.skip_confidence, "predictive strategy: hypotheses with Psi >= this may be skipped");
   v("skip_share", o.skip_share, "... skip a frontier when this share of its far side is predicted");
+  v("skip_predicted_targets", o.skip_predicted_targets, "... or when its goal got a hypothesis itself");
   v("targets_per_selection", o.targets_per_selection, "frontiers predicted per selection: the target, then the nearest");
   v("pictures", o.pictures,
     "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");

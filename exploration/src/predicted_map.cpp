@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/predicted_map.hpp"
 
+#include <cmath>
+
 namespace lookahead::exploration {
 
 void PredictedMap::add(const slam::HypothesisMap& h) {
@@ -18,6 +20,26 @@ void PredictedMap::add(const slam::HypothesisMap& h) {
       confidence_[key(c)] = psi;
     }
   }
+}
+
+void PredictedMap::add(const slam::HypothesisMap& h, double target_x, double target_y) {
+  add(h);
+  targets_.push_back({target_x, target_y, h.similarity});
+}
+
+bool PredictedMap::target_predicted(double x, double y, double radius, double min_confidence) const {
+  for (const Target& t : targets_)
+    if (t.psi >= min_confidence && std::hypot(t.x - x, t.y - y) <= radius) return true;
+  return false;
+}
+
+double PredictedMap::covered_share(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                   double min_confidence, bool by_target) const {
+  // The frontier cluster's goal stands for the target cell f the predictor was given; the
+  // goal of the same frontier moves a little as the map grows (1 m, as Mission's same goal).
+  if (by_target && cluster.has_goal && target_predicted(cluster.goal_x, cluster.goal_y, 1.0, min_confidence))
+    return 1.0;
+  return predicted_share(map, cluster, min_confidence);
 }
 
 double PredictedMap::confidence(slam::CellIndex c) const {

@@ -118,12 +118,27 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
       const PredictedMap& pm = *in.predicted;
       const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
       out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known),
-                     pm.predicted_share(*in.map, f, in.skip_confidence)});
+                     pm.covered_share(*in.map, f, in.skip_confidence, in.skip_predicted_targets)});
       continue;
     }
     out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range), 0.0});
   }
   return out;
+}
+
+// Debug trace of look-ahead mapping: how much of the chosen frontier's far side was
+// already predicted, and how many frontiers the strategy skipped or nearly skipped.
+void log_predicted_shares(const std::vector<Candidate>& candidates, std::size_t pick) {
+  int skipped = 0, partly = 0;
+  for (const Candidate& c : candidates) {
+    skipped += c.predicted_share >= 1.0;
+    partly += c.predicted_share > 0.0 && c.predicted_share < 1.0;
+  }
+  const Candidate& c = candidates[pick];
+  spdlog::debug("look-ahead: chosen frontier of {} cells at ({:.2f}, {:.2f}) {:.0f}% predicted, gain {:.1f} m^2; "
+                "{} of {} frontiers fully predicted, {} partly",
+                c.cluster->cells.size(), c.cluster->goal_x, c.cluster->goal_y, 100 * c.predicted_share,
+                c.information_gain, skipped, candidates.size(), partly);
 }
 
 // Plans from `start` to the goal with OMPL inside the ellipse the Dijkstra price bounds,
@@ -196,6 +211,7 @@ Selection select_target(const SelectionInputs& in) {
       break;
     }
     const FrontierCluster& target = *candidates[*pick].cluster;
+    if (in.predicted && in.strategy->uses_prediction()) log_predicted_shares(candidates, *pick);
     const planner::PlanResult r = plan_to(in, cost, *start, {target.goal_x, target.goal_y}, s);
     if (r.solved()) return s;
     ++s.plan_failures;

@@ -63,6 +63,30 @@ TEST(PredictedMap, PredictedShareCountsTheUnknownSideOfAFrontier) {
   EXPECT_DOUBLE_EQ(pm.predicted_share(map, cluster, 0.8), 0.0);  // not confident enough
 }
 
+TEST(PredictedMap, AFrontierWhoseGoalGotAHypothesisIsCoveredOnlyWhenAsked) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  for (int y = 0; y < 20; ++y) {  // the frontier of the test above, its goal at (-0.5, 0.5)
+    map.add_log_odds({0, y}, -1000);
+    map.add_log_odds({-1, y}, -1000);
+    cluster.cells.push_back({0, y});
+  }
+  cluster.has_goal = true;
+  cluster.goal_x = -0.5;
+  cluster.goal_y = 0.5;
+  PredictedMap pm;
+  pm.add(hypothesis(0.05, 1.0, 0.7, -1000), 5.0, 0.5);  // made for another frontier, 5.5 m away
+  const double share = pm.predicted_share(map, cluster, 0.6);
+  EXPECT_LT(share, 1.0);
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, 0.6, true), share);
+  pm.add(hypothesis(0.05, 0.2, 0.7, -1000), -0.2, 0.9);  // for this frontier (0.5 m off its goal)
+  EXPECT_TRUE(pm.target_predicted(-0.5, 0.5, 1.0, 0.6));
+  EXPECT_FALSE(pm.target_predicted(-0.5, 0.5, 1.0, 0.8));  // not confident enough
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, 0.6, true), 1.0);
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, 0.6, false), pm.predicted_share(map, cluster, 0.6));
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, 0.8, true), 0.0);
+}
+
 TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
   const PredictionAwareStrategy s(make_strategy("nearest"), 0.9);
   FrontierCluster a, b, c;

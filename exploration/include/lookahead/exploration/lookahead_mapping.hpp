@@ -34,6 +34,10 @@ struct LookaheadOptions {
   /// predicted, and the time is saved by counting predicted space as mapped.
   double skip_confidence = 0.6;
   double skip_share = 1.0;
+  /// Also skip a frontier whose goal was itself a prediction target that got a hypothesis
+  /// with Psi >= `skip_confidence` (the paper's unit: a hypothesis per target cell f,
+  /// sec. II-A), however much of its far side the hypothesis covers.
+  bool skip_predicted_targets = false;
   /// Frontiers predicted per target selection: the chosen target first, then the nearest
   /// other frontier goals (the paper's extension "predict several possible targets",
   /// sec. II-A). They queue on the worker, one delivered per latency period.

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <unordered_map>
+#include <vector>
 
 #include "lookahead/exploration/frontier_detector.hpp"
 #include "lookahead/slam/grid/occupancy_grid.hpp"
@@ -20,6 +21,8 @@ class PredictedMap {
 
   /// Merges a hypothesis; where hypotheses overlap, the more similar one (higher Psi) wins.
   void add(const slam::HypothesisMap& hypothesis);
+  /// Merges a hypothesis made for the frontier target (x, y) [m] and remembers the target.
+  void add(const slam::HypothesisMap& hypothesis, double target_x, double target_y);
   /// Covered by a hypothesis and not yet explored in `map`.
   [[nodiscard]] bool predicted(const slam::OccupancyGrid& map, slam::CellIndex c) const {
     return cells_.is_known(c) && !map.is_known(c);
@@ -30,6 +33,13 @@ class PredictedMap {
   /// least `min_confidence`: 1 when a look-ahead map already covers what lies beyond.
   [[nodiscard]] double predicted_share(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                        double min_confidence) const;
+  /// A hypothesis with Psi >= `min_confidence` was made for a target within `radius` [m]
+  /// of (x, y): the unexplored region of that frontier is predicted (sec. II-A, step 4).
+  [[nodiscard]] bool target_predicted(double x, double y, double radius, double min_confidence) const;
+  /// The share of the cluster's far side that look-ahead mapping covers: 1 when its goal is
+  /// a predicted target (with `by_target`), else predicted_share().
+  [[nodiscard]] double covered_share(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                     double min_confidence, bool by_target) const;
   [[nodiscard]] const slam::OccupancyGrid& cells() const { return cells_; }
   [[nodiscard]] std::size_t hypotheses() const { return hypotheses_; }
 
@@ -39,6 +49,10 @@ class PredictedMap {
   }
   slam::OccupancyGrid cells_;
   std::unordered_map<std::int64_t, float> confidence_;
+  struct Target {
+    double x, y, psi;
+  };
+  std::vector<Target> targets_;
   std::size_t hypotheses_ = 0;
 };
 
