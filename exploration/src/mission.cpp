@@ -267,9 +267,8 @@ bool Mission::goal_predicted() const {
   const slam::OccupancyGrid& m = map();
   for (const FrontierCluster& f : frontiers_.clusters(m)) {
     if (!f.has_goal || std::hypot(f.goal_x - goal_->x, f.goal_y - goal_->y) > kSameGoalRadius) continue;
-    const bool covered = lookahead_->predicted().covered_share(m, f, options_.lookahead.skip_confidence,
-                                                               options_.lookahead.skip_predicted_targets) >=
-                         options_.lookahead.skip_share;
+    const bool covered =
+        lookahead_->predicted().covered_share(m, f, options_.lookahead.skip_rule()) >= options_.lookahead.skip_share;
     if (covered) spdlog::debug("t {:.1f}: goal ({:.2f}, {:.2f}) dropped: predicted on the way", time_, goal_->x, goal_->y);
     return covered;
   }
@@ -283,8 +282,7 @@ SelectionInputs Mission::selection_inputs() {
   in.robot_radius = options_.robot.radius;
   if (lookahead_) {
     in.predicted = &lookahead_->predicted();
-    in.skip_confidence = options_.lookahead.skip_confidence;
-    in.skip_predicted_targets = options_.lookahead.skip_predicted_targets;
+    in.skip = options_.lookahead.skip_rule();
   }
   return in;
 }

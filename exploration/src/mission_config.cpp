@@ -63,6 +63,7 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
   v("skip_confidence", o.skip_confidence, "predictive strategy: hypotheses with Psi >= this may be skipped");
   v("skip_share", o.skip_share, "... skip a frontier when this share of its far side is predicted");
   v("skip_predicted_targets", o.skip_predicted_targets, "... or when its goal got a hypothesis itself");
+  v("skip_region_radius", o.skip_region_radius, "> 0: ... instead when its region within this is predicted [m]");
   v("targets_per_selection", o.targets_per_selection, "frontiers predicted per selection: the target, then the nearest");
   v("pictures", o.pictures,
     "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");

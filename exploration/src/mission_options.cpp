@@ -61,6 +61,7 @@ void MissionOptions::validate() const {
   require(lookahead.latency >= 0, "lookahead.latency >= 0");
   require(lookahead.targets_per_selection >= 1, "lookahead.targets_per_selection >= 1");
   require(lookahead.skip_confidence >= 0 && lookahead.skip_confidence <= 1, "lookahead.skip_confidence in [0, 1]");
+  require(lookahead.skip_region_radius >= 0, "lookahead.skip_region_radius >= 0");
   require(lookahead.skip_share > 0 && lookahead.skip_share <= 1, "lookahead.skip_share in (0, 1]");
   predictor::validate(lookahead.predictor);
   require(time_limit > 0, "time_limit > 0");

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/predicted_map.hpp"
 
+#include <array>
 #include <cmath>
+#include <deque>
+#include <unordered_set>
 
 namespace lookahead::exploration {
 
@@ -34,12 +37,52 @@ bool PredictedMap::target_predicted(double x, double y, double radius, double mi
 }
 
 double PredictedMap::covered_share(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
-                                   double min_confidence, bool by_target) const {
+                                   const SkipRule& rule) const {
+  const double min_confidence = rule.min_confidence;
+  if (rule.region_radius > 0 && cluster.has_goal) {
+    // Sec. II-B: the robot leaves out a region that is predicted. Its immediate far side
+    // alone (predicted_share) says nothing of the unknown further on, which skipping
+    // would leave neither explored nor predicted.
+    return unpredicted_area(map, cluster, rule.region_radius, min_confidence, rule.occupied) <= rule.region_tolerance
+               ? 1.0
+               : 0.0;
+  }
   // The frontier cluster's goal stands for the target cell f the predictor was given; the
   // goal of the same frontier moves a little as the map grows (1 m, as Mission's same goal).
-  if (by_target && cluster.has_goal && target_predicted(cluster.goal_x, cluster.goal_y, 1.0, min_confidence))
+  if (rule.by_target && cluster.has_goal && target_predicted(cluster.goal_x, cluster.goal_y, 1.0, min_confidence))
     return 1.0;
   return predicted_share(map, cluster, min_confidence);
+}
+
+double PredictedMap::unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                      double radius, double min_confidence, double occupied) const {
+  const slam::CellIndex g = map.cell_at(cluster.goal_x, cluster.goal_y);
+  const long r = std::lround(radius / map.resolution());
+  const auto walkable = [&](slam::CellIndex c) {
+    const long dx = c.x - g.x, dy = c.y - g.y;
+    if (dx * dx + dy * dy > r * r || map.is_known(c)) return false;
+    // A predicted wall closes the region as an explored one would (the predictor's
+    // unexplored region stops at explored walls, predictor/src/unexplored_region.cpp).
+    return !(cells_.is_known(c) && confidence(c) >= min_confidence && cells_.probability(c) >= occupied);
+  };
+  std::unordered_set<std::int64_t> seen;
+  std::deque<slam::CellIndex> open;
+  const auto push = [&](slam::CellIndex c) {
+    if (walkable(c) && seen.insert(key(c)).second) open.push_back(c);
+  };
+  const auto neighbours = [](slam::CellIndex c) {
+    return std::array<slam::CellIndex, 4>{{{c.x + 1, c.y}, {c.x - 1, c.y}, {c.x, c.y + 1}, {c.x, c.y - 1}}};
+  };
+  for (const slam::CellIndex c : cluster.cells)
+    for (const slam::CellIndex n : neighbours(c)) push(n);
+  std::size_t unpredicted = 0;
+  while (!open.empty()) {
+    const slam::CellIndex c = open.front();
+    open.pop_front();
+    unpredicted += !(cells_.is_known(c) && confidence(c) >= min_confidence);
+    for (const slam::CellIndex n : neighbours(c)) push(n);
+  }
+  return static_cast<double>(unpredicted) * map.resolution() * map.resolution();
 }
 
 double PredictedMap::confidence(slam::CellIndex c) const {

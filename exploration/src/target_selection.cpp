@@ -118,7 +118,7 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
       const PredictedMap& pm = *in.predicted;
       const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
       out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known),
-                     pm.covered_share(*in.map, f, in.skip_confidence, in.skip_predicted_targets)});
+                     pm.covered_share(*in.map, f, in.skip)});
       continue;
     }
     out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range), 0.0});

@@ -78,13 +78,41 @@ TEST(PredictedMap, AFrontierWhoseGoalGotAHypothesisIsCoveredOnlyWhenAsked) {
   pm.add(hypothesis(0.05, 1.0, 0.7, -1000), 5.0, 0.5);  // made for another frontier, 5.5 m away
   const double share = pm.predicted_share(map, cluster, 0.6);
   EXPECT_LT(share, 1.0);
-  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, 0.6, true), share);
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, {0.6, true}), share);
   pm.add(hypothesis(0.05, 0.2, 0.7, -1000), -0.2, 0.9);  // for this frontier (0.5 m off its goal)
   EXPECT_TRUE(pm.target_predicted(-0.5, 0.5, 1.0, 0.6));
   EXPECT_FALSE(pm.target_predicted(-0.5, 0.5, 1.0, 0.8));  // not confident enough
-  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, 0.6, true), 1.0);
-  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, 0.6, false), pm.predicted_share(map, cluster, 0.6));
-  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, 0.8, true), 0.0);
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, {0.6, true}), 1.0);
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, {0.6, false}), pm.predicted_share(map, cluster, 0.6));
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, {0.8, true}), 0.0);
+}
+
+TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  for (int y = 0; y < 20; ++y) {  // the frontier above, its goal on it at (0, 0.5)
+    map.add_log_odds({0, y}, -1000);
+    map.add_log_odds({-1, y}, -1000);
+    cluster.cells.push_back({0, y});
+  }
+  cluster.has_goal = true;
+  cluster.goal_y = 0.5;
+  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65};  // region: 0.5 m round the goal
+  PredictedMap none;
+  EXPECT_NEAR(none.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.39, 0.03);  // the half disc
+  EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
+  PredictedMap part;
+  part.add(hypothesis(0.05, 0.3, 0.7, -1000));  // free up to x = 0.3: the rest is unknown
+  EXPECT_GT(part.predicted_share(map, cluster, 0.6), 0.9);  // its far side looks covered ...
+  EXPECT_DOUBLE_EQ(part.covered_share(map, cluster, rule), 0.0);  // ... its region is not
+  PredictedMap free_region;
+  free_region.add(hypothesis(0.05, 1.0, 0.7, -1000));
+  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, rule), 1.0);
+  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, {0.8, false, 0.5, 0.1, 0.65}), 0.0);  // Psi too low
+  PredictedMap wall;
+  wall.add(hypothesis(0.05, 0.1, 0.7, 2000));  // a wall right beyond the frontier closes it
+  EXPECT_LT(wall.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.01);
+  EXPECT_DOUBLE_EQ(wall.covered_share(map, cluster, rule), 1.0);
 }
 
 TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {

@@ -38,6 +38,15 @@ struct LookaheadOptions {
   /// with Psi >= `skip_confidence` (the paper's unit: a hypothesis per target cell f,
   /// sec. II-A), however much of its far side the hypothesis covers.
   bool skip_predicted_targets = false;
+  /// > 0: instead, skip a frontier when its unexplored region within this radius (the
+  /// unknown cells reachable from its far side, closed by explored and predicted walls) has
+  /// at most `min_predicted_area` that no hypothesis with Psi >= skip_confidence predicts [m].
+  double skip_region_radius = 0.0;
+  /// The rule of the options above.
+  [[nodiscard]] SkipRule skip_rule() const {
+    return {skip_confidence, skip_predicted_targets, skip_region_radius, predictor.min_predicted_area,
+            predictor.features.occupied_threshold};
+  }
   /// Frontiers predicted per target selection: the chosen target first, then the nearest
   /// other frontier goals (the paper's extension "predict several possible targets",
   /// sec. II-A). They queue on the worker, one delivered per latency period.

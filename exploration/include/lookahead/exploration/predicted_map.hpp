@@ -15,6 +15,15 @@
 
 namespace lookahead::exploration {
 
+/// When look-ahead mapping covers a frontier (LookaheadOptions has the meaning of each).
+struct SkipRule {
+  double min_confidence = 0.6;  ///< hypotheses below this Psi do not count
+  bool by_target = false;       ///< a frontier whose goal got a hypothesis is covered
+  double region_radius = 0.0;   ///< > 0: covered when its region is predicted [m]
+  double region_tolerance = 1.0;  ///< ... up to this much unpredicted area [m^2]
+  double occupied = 0.65;       ///< predicted walls: probability at least this
+};
+
 class PredictedMap {
  public:
   explicit PredictedMap(const slam::GridOptions& options = {}) : cells_(options) {}
@@ -36,10 +45,17 @@ class PredictedMap {
   /// A hypothesis with Psi >= `min_confidence` was made for a target within `radius` [m]
   /// of (x, y): the unexplored region of that frontier is predicted (sec. II-A, step 4).
   [[nodiscard]] bool target_predicted(double x, double y, double radius, double min_confidence) const;
+  /// The unexplored region beyond the frontier that no hypothesis with `min_confidence`
+  /// predicts [m^2]: unknown cells within `radius` of the cluster's goal reachable from its
+  /// far side through unknown cells, not through predicted walls (probability >=
+  /// `occupied`), counting those not predicted. What driving there would still reveal.
+  [[nodiscard]] double unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                        double radius, double min_confidence, double occupied) const;
   /// The share of the cluster's far side that look-ahead mapping covers: 1 when its goal is
-  /// a predicted target (with `by_target`), else predicted_share().
+  /// a predicted target (`by_target`); with `region_radius`, 1 when the region's unpredicted
+  /// area is within the tolerance and 0 otherwise; else predicted_share().
   [[nodiscard]] double covered_share(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
-                                     double min_confidence, bool by_target) const;
+                                     const SkipRule& rule) const;
   [[nodiscard]] const slam::OccupancyGrid& cells() const { return cells_; }
   [[nodiscard]] std::size_t hypotheses() const { return hypotheses_; }
 

@@ -1,0 +1,31 @@
+#!/bin/bash
+# SPDX-License-Identifier: MIT
+# P-SLAM reproduction 1, where the time goes: full-coverage missions on the maze (true pose,
+# seeds 1-5, two at a time) of nearest and of predictive under each skip rule in
+# bench/pslam/maze_skip_rules/, with debug logs, then the table of summarize_maze_skips.py.
+# Run from the repository root after building:
+#   bash bench/pslam/maze_skip_rules.sh [RULE ...]     (default: every rule)
+# (LOOKAHEAD=/path/to/lookahead picks another binary; OUT=folder, default out/maze_skip_rules.)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+bin=${LOOKAHEAD:-./build/lookahead}
+out=${OUT:-out/maze_skip_rules}
+rules=("$@")
+if [ ${#rules[@]} -eq 0 ]; then
+  for f in bench/pslam/maze_skip_rules/*.yaml; do rules+=("$(basename "$f" .yaml)"); done
+fi
+run() {  # tag, then the arguments of explore
+  local tag=$1; shift
+  mkdir -p "$out/$tag"
+  for s in 1 2 3 4 5; do
+    SPDLOG_LEVEL=debug nice -n 10 "$bin" explore --world maze --pose truth --coverage-goal 1.0 --seed "$s" \
+      --out "$out/$tag/$s" "$@" > "$out/$tag/$s.log" 2>&1 &
+    if (( s % 2 == 0 )); then wait; fi
+  done
+  wait
+}
+[ -f "$out/nearest/5/run.json" ] || run nearest --strategy nearest
+for r in "${rules[@]}"; do
+  run "$r" --strategy predictive --config "bench/pslam/maze_skip_rules/$r.yaml"
+done
+python3 bench/pslam/summarize_maze_skips.py "$out" nearest "${rules[@]}" | tee "$out/summary.md"
