@@ -5,11 +5,13 @@
 # bench/pslam/maze_skip_rules/, with debug logs, then the table of summarize_maze_skips.py.
 # Run from the repository root after building:
 #   bash bench/pslam/maze_skip_rules.sh [RULE ...]     (default: every rule)
-# (LOOKAHEAD=/path/to/lookahead picks another binary; OUT=folder, default out/maze_skip_rules.)
+# (LOOKAHEAD=/path/to/lookahead picks another binary; COVERAGE=0.95 ends at the 95 % goal instead
+# of full coverage, predicted free space counting for the predictive runs; OUT=folder.)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin=${LOOKAHEAD:-./build/lookahead}
-out=${OUT:-out/maze_skip_rules}
+coverage=${COVERAGE:-1.0}
+out=${OUT:-out/maze_skip_rules_$coverage}
 rules=("$@")
 if [ ${#rules[@]} -eq 0 ]; then
   for f in bench/pslam/maze_skip_rules/*.yaml; do rules+=("$(basename "$f" .yaml)"); done
@@ -18,7 +20,7 @@ run() {  # tag, then the arguments of explore
   local tag=$1; shift
   mkdir -p "$out/$tag"
   for s in 1 2 3 4 5; do
-    SPDLOG_LEVEL=debug nice -n 10 "$bin" explore --world maze --pose truth --coverage-goal 1.0 --seed "$s" \
+    SPDLOG_LEVEL=debug nice -n 10 "$bin" explore --world maze --pose truth --coverage-goal "$coverage" --seed "$s" \
       --out "$out/$tag/$s" "$@" > "$out/$tag/$s.log" 2>&1 &
     if (( s % 2 == 0 )); then wait; fi
   done
