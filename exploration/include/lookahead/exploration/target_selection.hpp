@@ -53,7 +53,7 @@ struct SelectionInputs {
   planner::PlannerOptions planner;
   /// The look-ahead map, for strategies that use predictions (null: none).
   const PredictedMap* predicted = nullptr;
-  SkipRule skip;  ///< when the look-ahead map covers a frontier
+  SkipRule skip{};  ///< when the look-ahead map covers a frontier
   /// The robot's body [m] (no safety margin): a backtrack's shortcut between two passes of
   /// the trail keeps this clear of occupied cells.
   double robot_radius = 0.0;
