@@ -191,7 +191,7 @@ void Mission::refresh() {
   }
   // A backtrack follows the robot's own trail, which the margin may have closed: that is
   // why it is taken. The reactive stop still guards it.
-  if (follower_ && !backtracking_ && !follower_->path_still_valid(costmap_)) {
+  if (follower_ && !backtracking_ && !squeezing_ && !follower_->path_still_valid(costmap_)) {
     follower_.reset();  // new walls block the path: replan from here (to the same goal)
     path_blocked_ = true;
     ++stats_.replans;
@@ -309,6 +309,7 @@ bool Mission::replan_current_goal() {
 void Mission::select_new_target() {
   path_blocked_ = false;
   backtracking_ = false;
+  squeezing_ = false;
   follower_.reset();
   goal_.reset();
   blacklist_.expire(time_);
@@ -334,7 +335,7 @@ void Mission::select_new_target() {
       status_ = MissionStatus::kTrapped;
       return;
     }
-    if (s.outcome == SelectionOutcome::kUnreachable && backtrack()) return;
+    if (s.outcome == SelectionOutcome::kUnreachable && (squeeze() || backtrack())) return;
     turned_ = 0.0;
   } else {
     unreachable_streak_ = 0;
@@ -352,14 +353,37 @@ bool Mission::backtrack() {
   spdlog::debug("t {:.1f}: no frontier reachable: backtrack {} crumbs to ({:.2f}, {:.2f})", time_, s.path.size() - 1,
                 s.goal_x, s.goal_y);
   backtracking_ = true;
-  // The trail fits where the robot drove it, not beside it: a door the margin closed may
-  // leave the body a few cm, so the trail is tracked closely (a short look-ahead cuts
-  // less) and the robot turns on the spot sooner rather than sweep a jamb into its stop.
+  follow(s, close_tracking());
+  return true;
+}
+
+bool Mission::squeeze() {
+  if (!options_.squeeze) return false;
+  planner::CostmapOptions body = options_.planner.costmap;
+  body.robot_radius = options_.robot.radius;
+  const planner::Costmap tight(map(), body);
+  SelectionInputs in = selection_inputs();
+  in.costmap = &tight;
+  const Selection s = select_target(in);
+  count(s);
+  if (s.outcome != SelectionOutcome::kPlanned) return false;
+  ++stats_.squeezes;
+  spdlog::debug("t {:.1f}: no frontier reachable: squeeze to ({:.2f}, {:.2f}) without the margin", time_, s.goal_x,
+                s.goal_y);
+  // The margin would throw this path away at the next refresh; the reactive stop guards it.
+  squeezing_ = true;
+  follow(s, close_tracking());
+  return true;
+}
+
+planner::FollowerOptions Mission::close_tracking() const {
+  // The path fits where it is drawn, not beside it: a door the margin closed may leave the
+  // body a few cm, so it is tracked closely (a short look-ahead cuts less) and the robot
+  // turns on the spot sooner rather than sweep a jamb into its stop.
   planner::FollowerOptions close = options_.follower;
   close.lookahead = std::min(close.lookahead, kBacktrackLookahead);
   close.rotate_in_place_angle = std::min(close.rotate_in_place_angle, kBacktrackRotateAngle);
-  follow(s, close);
-  return true;
+  return close;
 }
 
 void Mission::follow(const Selection& s, const planner::FollowerOptions& tracking) {
@@ -407,8 +431,8 @@ void Mission::hold_or_replan() {
   // A stop that outlasts a costmap refresh is not a wall the map had not caught up with:
   // the robot is off its path, facing a door jamb it cut towards. Waiting for the stuck
   // clock (30 s) wastes the time; a new plan starts from the nearest free cell, away from it.
-  // A backtrack has no other way to go: it waits, and the stuck clock gives it up.
-  if (++stop_streak_ < kStopsBeforeReplan || backtracking_) return;
+  // A backtrack or a squeeze has no other way to go: it waits, and the stuck clock gives it up.
+  if (++stop_streak_ < kStopsBeforeReplan || backtracking_ || squeezing_) return;
   stop_streak_ = 0;
   follower_.reset();
   path_blocked_ = true;

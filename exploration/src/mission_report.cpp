@@ -123,6 +123,7 @@ std::string to_json(const MissionSummary& s) {
                   {"stuck_goals", s.statistics.stuck_goals}, {"grid_fallbacks", s.statistics.grid_fallbacks}, {"planning_time_s", s.statistics.planning_time}};
   j["safety_stops"] = s.statistics.safety_stops;
   j["backtracks"] = s.statistics.backtracks;
+  j["squeezes"] = s.statistics.squeezes;
   j["retired_frontier_cells"] = s.statistics.retired_frontier_cells;
   j["slam_position_error_mean_m"] = s.slam_position_error_mean;
   j["slam_position_error_final_m"] = s.slam_position_error_final;

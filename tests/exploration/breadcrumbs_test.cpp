@@ -130,5 +130,36 @@ TEST(SelectEscape, TheTrailLeadsOutThroughTheDoorTheMarginClosed) {
   EXPECT_EQ(select_escape(in, inside).outcome, SelectionOutcome::kUnreachable);
 }
 
+// The squeeze rule (mission.squeeze): the 0.3 m door the 0.18 m inflation closes is open to
+// a 0.1 m body, so a plan on the map inflated by the body alone reaches the right room.
+TEST(Squeeze, TheDoorTheMarginClosedIsOpenToTheBody) {
+  const OccupancyGrid map = two_rooms();
+  FrontierDetector frontiers;
+  frontiers.rebuild(map);
+  const std::unique_ptr<TargetStrategy> strategy = make_strategy("nearest");
+  GoalBlacklist blacklist{BlacklistOptions{0.5, 60.0, 2}};
+  planner::CostmapOptions co;
+  co.unknown_is_free = true;
+  co.robot_radius = 0.18;  // body 0.1 m + margin 0.08 m
+  const planner::Costmap with_margin(map, co);
+  co.robot_radius = 0.1;
+  const planner::Costmap body(map, co);
+  SelectionInputs in;
+  in.map = &map;
+  in.frontiers = &frontiers;
+  in.strategy = strategy.get();
+  in.blacklist = &blacklist;
+  in.pose = {0.5, 0.75, 0.0};
+  in.planner.max_samples = 500;
+  in.costmap = &with_margin;
+  EXPECT_EQ(select_target(in).outcome, SelectionOutcome::kUnreachable);
+  in.costmap = &body;
+  const Selection s = select_target(in);
+  ASSERT_EQ(s.outcome, SelectionOutcome::kPlanned);
+  EXPECT_GT(s.goal_x, 2.05);  // in the right room, through the door
+  EXPECT_TRUE(body.path_is_free(s.path));
+  EXPECT_FALSE(with_margin.path_is_free(s.path));
+}
+
 }  // namespace
 }  // namespace lookahead::exploration

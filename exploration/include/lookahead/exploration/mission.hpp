@@ -45,6 +45,7 @@ struct MissionStatistics {
   int collisions = 0;
   int safety_stops = 0;  ///< steps the reactive stop held the robot
   int backtracks = 0;    ///< escapes along the robot's own trail (no frontier was reachable)
+  int squeezes = 0;      ///< paths planned without the safety margin (no frontier was reachable)
   std::size_t retired_frontier_cells = 0;  ///< frontier cells that outlived a visit
   std::size_t scans = 0, map_refreshes = 0;
   bool ended_on_predictions = false;  ///< done because every frontier left was predicted
@@ -102,6 +103,8 @@ class Mission {
   bool goal_still_useful() const;
   bool goal_predicted() const;  ///< look-ahead mapping covers the current target
   bool backtrack();  ///< follows the trail out of a place with no reachable frontier
+  bool squeeze();    ///< plans to a frontier on the map inflated by the body alone
+  planner::FollowerOptions close_tracking() const;  ///< for paths that fit only where drawn
   void follow(const Selection& s, const planner::FollowerOptions& tracking);  ///< a new goal and path
   bool path_ahead_blocked(double v) const;
   void hold_or_replan();  ///< counts a reactive stop; gives the path up when it lasts
@@ -128,6 +131,7 @@ class Mission {
   std::optional<planner::Point2> reached_goal_;
   Breadcrumbs crumbs_;
   bool backtracking_ = false;  ///< the current goal is the end of a backtrack, not a frontier
+  bool squeezing_ = false;     ///< the current path was planned without the safety margin
   std::unique_ptr<CarmenWriter> log_;
   slam::LaserScan last_scan_;
 
