@@ -99,14 +99,7 @@ TEST(SelectEscape, TheTrailLeadsOutThroughTheDoorTheMarginClosed) {
   frontiers.rebuild(map);
   const std::unique_ptr<TargetStrategy> strategy = make_strategy("nearest");
   GoalBlacklist blacklist{BlacklistOptions{0.5, 60.0, 2}};
-  SelectionInputs in;
-  in.map = &map;
-  in.costmap = &costmap;
-  in.frontiers = &frontiers;
-  in.strategy = strategy.get();
-  in.blacklist = &blacklist;
-  in.pose = {0.5, 0.75, 0.0};
-  in.planner.max_samples = 500;
+  SelectionInputs in = testing::selection_inputs(map, costmap, frontiers, *strategy, blacklist, {0.5, 0.75, 0.0});
   ASSERT_EQ(select_target(in).outcome, SelectionOutcome::kUnreachable);
 
   // The robot came from the right room through the door's middle (y = 0.85 m).
@@ -144,14 +137,8 @@ TEST(Squeeze, TheDoorTheMarginClosedIsOpenToTheBody) {
   const planner::Costmap with_margin(map, co);
   co.robot_radius = 0.1;
   const planner::Costmap body(map, co);
-  SelectionInputs in;
-  in.map = &map;
-  in.frontiers = &frontiers;
-  in.strategy = strategy.get();
-  in.blacklist = &blacklist;
-  in.pose = {0.5, 0.75, 0.0};
-  in.planner.max_samples = 500;
-  in.costmap = &with_margin;
+  SelectionInputs in =
+      testing::selection_inputs(map, with_margin, frontiers, *strategy, blacklist, {0.5, 0.75, 0.0});
   EXPECT_EQ(select_target(in).outcome, SelectionOutcome::kUnreachable);
   in.costmap = &body;
   const Selection s = select_target(in);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Hand-made occupancy grids for the exploration tests: rectangles of evidence, and the
-// walled room, open on its right side, that several tests start from.
+// walled room, open on its right side, that several tests start from; selection inputs over them.
 #pragma once
 
+#include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/slam/grid/occupancy_grid.hpp"
 
 namespace lookahead::exploration::testing {
@@ -22,6 +23,21 @@ inline slam::OccupancyGrid open_room(int width, int height, int wall_end) {
   add_rect(g, -1, height, wall_end, height, 3 * g.fixed_hit());
   add_rect(g, -1, -1, -1, height, 3 * g.fixed_hit());
   return g;
+}
+
+/// Selection inputs over a hand-made map, with the small sample budget the tests plan with.
+inline SelectionInputs selection_inputs(const slam::OccupancyGrid& map, const planner::Costmap& costmap,
+                                        const FrontierDetector& frontiers, const TargetStrategy& strategy,
+                                        GoalBlacklist& blacklist, slam::Pose2 pose) {
+  SelectionInputs in;
+  in.map = &map;
+  in.costmap = &costmap;
+  in.frontiers = &frontiers;
+  in.strategy = &strategy;
+  in.blacklist = &blacklist;
+  in.pose = pose;
+  in.planner.max_samples = 500;
+  return in;
 }
 
 }  // namespace lookahead::exploration::testing

@@ -32,15 +32,8 @@ struct Scene {
     frontiers.rebuild(map);
   }
   Selection select(double now) {
-    SelectionInputs in;
-    in.map = &map;
-    in.costmap = &costmap;
-    in.frontiers = &frontiers;
-    in.strategy = strategy.get();
-    in.blacklist = &blacklist;
-    in.pose = {0.5, 0.75, 0.0};
+    SelectionInputs in = testing::selection_inputs(map, costmap, frontiers, *strategy, blacklist, {0.5, 0.75, 0.0});
     in.now = now;
-    in.planner.max_samples = 500;
     return select_target(in);
   }
 };
