@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <queue>
 #include <stdexcept>
 #include <unordered_map>
@@ -59,26 +60,16 @@ class CrumbBuckets {
   std::unordered_map<std::int64_t, std::vector<std::size_t>> buckets_;
 };
 
-}  // namespace
-
-planner::Path Breadcrumbs::backtrack(planner::Point2 from, const std::function<bool(planner::Point2)>& outside,
-                                     const Passable& passable) {
-  std::size_t k = crumbs_.size();
-  while (k > 0 && !outside(crumbs_[k - 1])) --k;
-  if (k == 0) return {};
-  planner::Path path{from};
-  for (const std::size_t i : shortest_way(way_in(from, passable), k - 1, passable)) path.push_back(crumbs_[i]);
-  crumbs_.resize(k);  // the exit crumb stays: the trail goes on from there
-  return path;
-}
-
-std::size_t Breadcrumbs::way_in(planner::Point2 from, const Passable& passable) const {
-  std::size_t best = crumbs_.size() - 1;
-  if (!passable) return best;
+// The crumb the way starts from: the nearest one `passable` reaches from `from`, or the
+// newest when none (or no `passable`).
+std::size_t way_in(const std::vector<planner::Point2>& crumbs, const CrumbBuckets* buckets, planner::Point2 from,
+                   const Breadcrumbs::Passable& passable) {
+  std::size_t best = crumbs.size() - 1;
+  if (!buckets) return best;
   double best_d = INFINITY;
-  CrumbBuckets(crumbs_).near(from, [&](std::size_t j) {
-    const double d = planner::distance(crumbs_[j], from);
-    if (d < best_d && passable(from, crumbs_[j])) {
+  buckets->near(from, [&](std::size_t j) {
+    const double d = planner::distance(crumbs[j], from);
+    if (d < best_d && passable(from, crumbs[j])) {
       best_d = d;
       best = j;
     }
@@ -87,10 +78,11 @@ std::size_t Breadcrumbs::way_in(planner::Point2 from, const Passable& passable) 
 }
 
 // Dijkstra over the crumbs: consecutive crumbs are joined (the robot drove between them),
-// crumbs of different passes where `passable` allows. Crumb indices from `from` to `to`.
-std::vector<std::size_t> Breadcrumbs::shortest_way(std::size_t from, std::size_t to, const Passable& passable) const {
-  const std::size_t n = crumbs_.size();
-  const std::optional<CrumbBuckets> buckets = passable ? std::optional<CrumbBuckets>(crumbs_) : std::nullopt;
+// crumbs of different passes (found in `buckets`) where `passable` allows. Crumb indices
+// from `from` to `to`.
+std::vector<std::size_t> shortest_way(const std::vector<planner::Point2>& crumbs, const CrumbBuckets* buckets,
+                                      std::size_t from, std::size_t to, const Breadcrumbs::Passable& passable) {
+  const std::size_t n = crumbs.size();
   std::vector<double> dist(n, INFINITY);
   std::vector<std::size_t> parent(n, n);
   using Entry = std::pair<double, std::size_t>;
@@ -98,7 +90,7 @@ std::vector<std::size_t> Breadcrumbs::shortest_way(std::size_t from, std::size_t
   dist[from] = 0.0;
   open.push({0.0, from});
   const auto relax = [&](std::size_t i, std::size_t j) {
-    const double d = dist[i] + planner::distance(crumbs_[i], crumbs_[j]);
+    const double d = dist[i] + planner::distance(crumbs[i], crumbs[j]);
     if (d >= dist[j]) return;
     dist[j] = d;
     parent[j] = i;
@@ -112,9 +104,9 @@ std::vector<std::size_t> Breadcrumbs::shortest_way(std::size_t from, std::size_t
     if (i > 0) relax(i, i - 1);
     if (i + 1 < n) relax(i, i + 1);
     if (!buckets) continue;
-    buckets->near(crumbs_[i], [&](std::size_t j) {
-      if (j + 1 != i && j != i + 1 && j != i && dist[i] + planner::distance(crumbs_[i], crumbs_[j]) < dist[j] &&
-          passable(crumbs_[i], crumbs_[j]))
+    buckets->near(crumbs[i], [&](std::size_t j) {
+      if (j + 1 != i && j != i + 1 && j != i && dist[i] + planner::distance(crumbs[i], crumbs[j]) < dist[j] &&
+          passable(crumbs[i], crumbs[j]))
         relax(i, j);
     });
   }
@@ -122,6 +114,22 @@ std::vector<std::size_t> Breadcrumbs::shortest_way(std::size_t from, std::size_t
   for (std::size_t i = to; i != n; i = parent[i]) way.push_back(i);
   std::reverse(way.begin(), way.end());
   return way;
+}
+
+}  // namespace
+
+planner::Path Breadcrumbs::backtrack(planner::Point2 from, const std::function<bool(planner::Point2)>& outside,
+                                     const Passable& passable) {
+  std::size_t k = crumbs_.size();
+  while (k > 0 && !outside(crumbs_[k - 1])) --k;
+  if (k == 0) return {};
+  const std::optional<CrumbBuckets> buckets = passable ? std::optional<CrumbBuckets>(crumbs_) : std::nullopt;
+  const CrumbBuckets* b = buckets ? &*buckets : nullptr;
+  planner::Path path{from};
+  for (const std::size_t i : shortest_way(crumbs_, b, way_in(crumbs_, b, from, passable), k - 1, passable))
+    path.push_back(crumbs_[i]);
+  crumbs_.resize(k);  // the exit crumb stays: the trail goes on from there
+  return path;
 }
 
 }  // namespace lookahead::exploration

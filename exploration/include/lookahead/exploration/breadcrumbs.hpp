@@ -8,7 +8,6 @@
 
 #include <cstddef>
 #include <functional>
-#include <optional>
 #include <vector>
 
 #include "lookahead/planner/path.hpp"
@@ -43,9 +42,6 @@ class Breadcrumbs {
   [[nodiscard]] std::size_t size() const { return crumbs_.size(); }
 
  private:
-  [[nodiscard]] std::size_t way_in(planner::Point2 from, const Passable& passable) const;
-  [[nodiscard]] std::vector<std::size_t> shortest_way(std::size_t from, std::size_t to, const Passable& passable) const;
-
   double spacing_;
   std::vector<planner::Point2> crumbs_;
 };
