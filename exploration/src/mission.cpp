@@ -38,6 +38,15 @@ constexpr double kSameGoalRadius = 1.0;
 // from where it stands (2 s at 10 Hz): the stop found something the path does not avoid.
 constexpr int kStopsBeforeReplan = 20;
 
+// The reactive stop's corridor is this much wider than the body on each side [m].
+constexpr double kStopSideClearance = 0.02;
+
+// Selections in a row with no reachable frontier (each followed by a backtrack or a look
+// around) before the last resort, and last-resort moves (squeeze, backtrack, alternating)
+// before the mission ends trapped. A squeeze that reaches its goal starts the count again.
+constexpr int kOrdinaryTries = 3;
+constexpr int kLastResortTries = 6;
+
 // Tracking of a backtrack along the trail: look-ahead [m] and heading error that stops
 // forward motion [rad].
 constexpr double kBacktrackLookahead = 0.15;
@@ -237,6 +246,7 @@ bool Mission::need_new_path() {
   // the sensor cannot see from its goal, the inside of a wall): the frontier cells next to
   // it are retired, and the spot is not picked again for a while.
   if (follower_->goal_reached()) {
+    if (squeezing_) last_resorts_ = 0;  // it got through: the next trap gets all its tries
     if (goal_ && !backtracking_) {
       blacklist_.add(goal_->x, goal_->y, time_);
       reached_goal_ = goal_;  // its frontier gets one more map update to clear
@@ -313,6 +323,14 @@ void Mission::select_new_target() {
   follower_.reset();
   goal_.reset();
   blacklist_.expire(time_);
+  // Half through a door the margin closes, the ordinary costmap has no room where the robot
+  // stands: the next target is chosen as the squeeze chose its own. Out of the door, the
+  // margin has room again.
+  if (tight_) {
+    const slam::Pose2 p = estimate();
+    tight_ = !costmap_.is_free(p.x, p.y);
+    if (tight_ && squeeze()) return;
+  }
   const Selection s = select_target(selection_inputs());
   spdlog::debug("t {:.1f}: selection {}: clusters {}, candidates {}, plans {} ({} failed), goal ({:.2f}, {:.2f})",
                 time_, static_cast<int>(s.outcome), s.clusters, s.candidates, s.plans, s.plan_failures, s.goal_x,
@@ -331,14 +349,17 @@ void Mission::select_new_target() {
       turned_ = 0.0;
       return;
     }
-    if (++unreachable_streak_ >= 3) {
+    const bool unreachable = s.outcome == SelectionOutcome::kUnreachable;
+    if (++unreachable_streak_ >= kOrdinaryTries) {
+      if (unreachable && last_resort()) return;
       status_ = MissionStatus::kTrapped;
       return;
     }
-    if (s.outcome == SelectionOutcome::kUnreachable && (squeeze() || backtrack())) return;
+    if (unreachable && backtrack()) return;
     turned_ = 0.0;
   } else {
     unreachable_streak_ = 0;
+    last_resorts_ = 0;
     // P-SLAM predicts the region around the next exploration goal (sec. II-A, step 1).
     if (lookahead_) lookahead_->request(map(), prediction_targets(s.goal_x, s.goal_y), time_);
     follow(s, options_.follower);
@@ -357,6 +378,18 @@ bool Mission::backtrack() {
   return true;
 }
 
+bool Mission::last_resort() {
+  // The ordinary tries found no frontier the margin lets the robot reach. Before calling it
+  // trapped: a door wider than the body but narrower than body + margin is no wall. A
+  // squeeze the stuck clock gives up (a jamb it cannot pass) is followed by a backtrack,
+  // so the next squeeze starts elsewhere and aims at another frontier (the failed goal is
+  // blacklisted). Only here, so a mission that never runs out of tries is unchanged.
+  if (!options_.squeeze || last_resorts_ >= kLastResortTries) return false;
+  ++last_resorts_;
+  const bool squeeze_first = last_resorts_ % 2 == 1;
+  return squeeze_first ? (squeeze() || backtrack()) : (backtrack() || squeeze());
+}
+
 bool Mission::squeeze() {
   if (!options_.squeeze) return false;
   planner::CostmapOptions body = options_.planner.costmap;
@@ -372,6 +405,7 @@ bool Mission::squeeze() {
                 s.goal_y);
   // The margin would throw this path away at the next refresh; the reactive stop guards it.
   squeezing_ = true;
+  tight_ = true;
   follow(s, close_tracking());
   return true;
 }
@@ -441,8 +475,16 @@ void Mission::hold_or_replan() {
 
 bool Mission::path_ahead_blocked(double v) const {
   // The corridor the body sweeps in the next step plus the stop distance, in the laser
-  // (= robot) frame: end points inside it are walls about to be hit.
-  const double half_width = options_.robot.radius + 0.02;
+  // (= robot) frame: end points inside it are walls about to be hit. A squeeze passes doors
+  // with 2-5 cm to spare on each side (its path lies on the cells of the map inflated by the
+  // body, up to half a cell off the door's middle). Until the robot is out of such a door
+  // the corridor is the body's own width less twice the range noise: the jambs' returns
+  // scatter by that much, and a corridor that catches them holds the robot for good (a
+  // 0.3 m door: 1 cm noise on returns 1.3 cm beside the body). The planned path keeps the
+  // body off the mapped jambs; the stop is for what the map does not hold. Elsewhere the
+  // corridor is 2 cm wider than the body.
+  const double half_width = tight_ ? options_.robot.radius - 2.0 * options_.laser.range_sigma
+                                   : options_.robot.radius + kStopSideClearance;
   const double reach = options_.robot.radius + v * options_.laser.period() + options_.stop_distance;
   for (std::size_t i = 0; i < last_scan_.ranges.size(); ++i) {
     if (!last_scan_.is_return(i)) continue;

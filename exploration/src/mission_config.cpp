@@ -36,7 +36,7 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v("safety_margin", o.safety_margin, "planning clearance beyond the robot radius [m]");
   v("stop_distance", o.stop_distance, "reactive stop for laser points this close ahead [m]");
   v("backtrack", o.backtrack, "no frontier reachable: retrace the robot's trail out of its place");
-  v("squeeze", o.squeeze, "no frontier reachable: first plan without the safety margin");
+  v("squeeze", o.squeeze, "last resort before trapped: plan without the safety margin");
   v.section("robot");
   v("radius", o.robot.radius, "disc radius [m], > 0");
   v("max_speed", o.robot.max_speed, "[m/s], > 0");

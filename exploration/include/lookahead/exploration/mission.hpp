@@ -104,6 +104,7 @@ class Mission {
   bool goal_predicted() const;  ///< look-ahead mapping covers the current target
   bool backtrack();  ///< follows the trail out of a place with no reachable frontier
   bool squeeze();    ///< plans to a frontier on the map inflated by the body alone
+  bool last_resort();  ///< squeeze or backtrack, alternating, before the mission is trapped
   planner::FollowerOptions close_tracking() const;  ///< for paths that fit only where drawn
   void follow(const Selection& s, const planner::FollowerOptions& tracking);  ///< a new goal and path
   bool path_ahead_blocked(double v) const;
@@ -132,6 +133,8 @@ class Mission {
   Breadcrumbs crumbs_;
   bool backtracking_ = false;  ///< the current goal is the end of a backtrack, not a frontier
   bool squeezing_ = false;     ///< the current path was planned without the safety margin
+  /// Since the last squeeze the robot has not stood on a cell the safety margin leaves free.
+  bool tight_ = false;
   std::unique_ptr<CarmenWriter> log_;
   slam::LaserScan last_scan_;
 
@@ -141,6 +144,7 @@ class Mission {
   double next_goal_check_ = 0.0, next_metrics_ = 0.0;
   double best_goal_distance_ = 0.0, last_progress_time_ = 0.0;
   int unreachable_streak_ = 0;
+  int last_resorts_ = 0;  ///< squeezes and backtracks since the ordinary tries ran out
   bool map_changed_ = false;
   bool path_blocked_ = false;  ///< the follower was dropped because new walls block its path
   int stop_streak_ = 0;        ///< consecutive steps the reactive stop has held the robot

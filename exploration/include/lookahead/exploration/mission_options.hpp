@@ -48,11 +48,12 @@ struct MissionOptions {
   /// When no frontier is reachable, retrace the robot's own trail to the last spot outside
   /// its place on the costmap before calling the robot trapped (breadcrumbs.hpp).
   bool backtrack = true;
-  /// When no frontier is reachable, first plan once on the map inflated by the robot's body
-  /// alone (no safety_margin) and follow that path closely: a door wider than the robot but
-  /// narrower than robot + margin is no wall (the KTH plans have 0.3-0.4 m doors). Off by
-  /// default until the studies are re-run with it.
-  bool squeeze = false;
+  /// The last resort before "trapped": when the ordinary tries (backtracks, looking around)
+  /// found no reachable frontier, plan on the map inflated by the robot's body alone (no
+  /// safety_margin) and follow that path closely, alternating with backtracks: a door wider
+  /// than the robot but narrower than robot + margin is no wall (the KTH plans have
+  /// 0.3-0.4 m doors). A mission that never runs out of tries is unchanged by it.
+  bool squeeze = true;
 
   slam::RbpfOptions slam;
   planner::PlannerOptions planner;
