@@ -23,7 +23,7 @@ void lower_this_thread_priority() {
 }  // namespace
 
 PredictionWorker::PredictionWorker(const PredictorOptions& options, Priority priority)
-    : options_((validate(options), options)), priority_(priority), thread_([this] { loop(); }) {}
+    : priority_(priority), options_((validate(options), options)), thread_([this] { loop(); }) {}
 
 PredictionWorker::~PredictionWorker() {
   {
