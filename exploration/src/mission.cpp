@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "lookahead/exploration/carmen_writer.hpp"
+#include "lookahead/exploration/swept_disc.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
 
@@ -437,7 +438,7 @@ void Mission::act() {
     cmd.omega = options_.robot.max_turn_rate;  // look around before choosing a target
   } else if (follower_) {
     cmd = follower_->command(estimate());
-    if (cmd.v > 0 && path_ahead_blocked(cmd.v)) {
+    if (cmd.v > 0 && path_ahead_blocked(cmd)) {
       cmd.v = 0.0;  // turn on the spot only; the costmap catches up at the next refresh
       ++stats_.safety_stops;
       hold_or_replan();
@@ -473,19 +474,19 @@ void Mission::hold_or_replan() {
   ++stats_.replans;
 }
 
-bool Mission::path_ahead_blocked(double v) const {
-  // The corridor the body sweeps in the next step plus the stop distance, in the laser
-  // (= robot) frame: end points inside it are walls about to be hit. A squeeze passes doors
-  // with 2-5 cm to spare on each side (its path lies on the cells of the map inflated by the
-  // body, up to half a cell off the door's middle). Until the robot is out of such a door
-  // the corridor is the body's own width less twice the range noise: the jambs' returns
-  // scatter by that much, and a corridor that catches them holds the robot for good (a
-  // 0.3 m door: 1 cm noise on returns 1.3 cm beside the body). The planned path keeps the
-  // body off the mapped jambs; the stop is for what the map does not hold. Elsewhere the
-  // corridor is 2 cm wider than the body.
-  const double half_width = tight_ ? options_.robot.radius - 2.0 * options_.laser.range_sigma
-                                   : options_.robot.radius + kStopSideClearance;
-  const double reach = options_.robot.radius + v * options_.laser.period() + options_.stop_distance;
+bool Mission::path_ahead_blocked(const planner::VelocityCommand& cmd) const {
+  // Half through a door the margin closes (after a squeeze) the jambs are a few cm from the
+  // body: what counts is whether the disc, driven along the commanded arc, runs into a
+  // return (swept_disc.hpp). A straight corridor 2 cm wider than the body would catch the
+  // jambs' noisy returns and hold the robot in the door, and would miss a jamb the arc turns
+  // into (kth_50010535_PLAN1, t = 1258 s, before this).
+  const double travel = cmd.v * options_.laser.period() + options_.stop_distance;
+  if (tight_) return disc_sweeps_into(last_scan_, options_.robot.radius, {cmd.v, cmd.omega, travel});
+  // Elsewhere: the corridor the body sweeps in the next step plus the stop distance, in the
+  // laser (= robot) frame, 2 cm wider than the body: end points inside it are walls about to
+  // be hit.
+  const double half_width = options_.robot.radius + kStopSideClearance;
+  const double reach = options_.robot.radius + travel;
   for (std::size_t i = 0; i < last_scan_.ranges.size(); ++i) {
     if (!last_scan_.is_return(i)) continue;
     const double a = last_scan_.bearing(i) + last_scan_.laser_offset.theta;

@@ -77,13 +77,13 @@ TEST(Mission, FrontierBehindANarrowSlitEndsTrapped) {
   EXPECT_EQ(m.statistics().collisions, 0);
 }
 
-// A room whose only way out is a 0.3 m door: the 0.1 m robot fits (5 cm each side), but the
+// A room whose only way out is a 0.35 m door: the 0.1 m robot fits (7.5 cm each side), but the
 // planning margin (0.08 m) closes it. The squeeze, the last resort, takes the robot through;
 // without it the mission ends trapped.
 TEST(Mission, DoorOnlyTheBodyFitsIsPassedAsALastResort) {
   World world(300, 100, 0.05, {0, 0}, World::kOccupied);
   world.fill_rect({0.5, 0.5}, {4.0, 4.5}, World::kFree);    // the robot's room
-  world.fill_rect({4.0, 2.35}, {4.6, 2.65}, World::kFree);  // the door, 0.6 m deep
+  world.fill_rect({4.0, 2.30}, {4.6, 2.65}, World::kFree);  // the door, 0.6 m deep
   world.fill_rect({4.6, 0.5}, {14.5, 4.5}, World::kFree);   // the hall
   for (const bool squeeze : {false, true}) {
     MissionOptions o = quick(PoseSource::kTruth);

@@ -107,7 +107,7 @@ class Mission {
   bool last_resort();  ///< squeeze or backtrack, alternating, before the mission is trapped
   planner::FollowerOptions close_tracking() const;  ///< for paths that fit only where drawn
   void follow(const Selection& s, const planner::FollowerOptions& tracking);  ///< a new goal and path
-  bool path_ahead_blocked(double v) const;
+  bool path_ahead_blocked(const planner::VelocityCommand& cmd) const;
   void hold_or_replan();  ///< counts a reactive stop; gives the path up when it lasts
 
   const World& world_;

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// The reactive stop of a robot that passes walls with centimetres to spare (a squeeze through
+// a door the safety margin closes): the body is a disc, and what it sweeps in the next moment
+// is the disc driven along the commanded arc, not a straight corridor ahead. Pure pursuit
+// turns around a door jamb on an arc, and a straight corridor misses the jamb beside it.
+#pragma once
+
+#include "lookahead/slam/sensor/laser_scan.hpp"
+
+namespace lookahead::exploration {
+
+/// The disc motion to check: forward speed v > 0 [m/s], turn rate omega [rad/s], over this
+/// distance along the arc [m].
+struct DiscMotion {
+  double v = 0.0;
+  double omega = 0.0;
+  double distance = 0.0;
+};
+
+/// True when a laser end point of `scan` (robot frame, the laser at its offset) comes nearer
+/// than `radius` to the disc's centre somewhere along the motion, and nearer than it is now:
+/// a wall the robot is driving into. Walls beside the body that the motion does not approach
+/// do not count, so the robot may drive along a jamb 1 cm away.
+bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMotion& motion);
+
+}  // namespace lookahead::exploration
