@@ -111,19 +111,28 @@ NearOccupiedField::NearOccupiedField(const EvidenceOctree& map) : resolution_(ma
       for (long dy = 0; dy <= 2; ++dy) {
         for (long dx = 0; dx <= 2; ++dx) {
           const long x = k.x - x0_ - 1 + dx, y = k.y - y0_ - 1 + dy, z = k.z - z0_ - 1 + dz;
-          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] = 1;
+          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 1;
         }
       }
     }
   }
+  map.for_each_voxel([&](const OctreeKey& k, float) {
+    const long x = k.x - x0_, y = k.y - y0_, z = k.z - z0_;
+    if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return;
+    bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 2;
+  });
 }
 
-bool NearOccupiedField::near(const Eigen::Vector3d& p) const {
+std::uint8_t NearOccupiedField::bits_at(const Eigen::Vector3d& p) const {
   const OctreeGrid g(resolution_);
   const long x = g.axis_key(p.x()) - x0_, y = g.axis_key(p.y()) - y0_, z = g.axis_key(p.z()) - z0_;
-  if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return false;
-  return bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] != 0;
+  if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return 0;
+  return bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)];
 }
+
+bool NearOccupiedField::near(const Eigen::Vector3d& p) const { return (bits_at(p) & 1) != 0; }
+
+bool NearOccupiedField::observed(const Eigen::Vector3d& p) const { return bits_at(p) != 0; }
 
 OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& o) {
   Points3 occupied;
@@ -131,7 +140,18 @@ OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptio
   map.for_each_voxel([&](const OctreeKey& k, float l) {
     if (l > above) occupied.push_back(map.grid().centre_of(k));
   });
-  return {NearOccupiedField(map), IcpTarget3(bin_points3(occupied, o.bin_size), o.icp_max_distance)};
+  IcpTarget3 icp(bin_points3(occupied, o.bin_size), o.icp_max_distance);
+  IcpTarget3 structure(structure_points(icp).points, o.icp_max_distance);
+  return {NearOccupiedField(map), std::move(icp), std::move(structure)};
+}
+
+SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, const MatchingOptions& o) {
+  SweepWindow w;
+  const std::size_t every = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, scored_points));
+  for (std::size_t i = 0; i < points.size(); i += every) w.scored.push_back(points[i]);
+  w.cloud = bin_points3(points, o.bin_size);
+  w.structure = structure_points(IcpTarget3(w.cloud, o.icp_max_distance));
+  return w;
 }
 
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w, const Pose4& guess,
@@ -144,6 +164,8 @@ WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w,
   m.pose = icp.transform;
   m.icp_error = icp.mean_error;
   m.translation = (m.pose.position() - guess.position()).norm();
+  m.structure = structure_fit(w.structure, target.structure, m.pose,
+                              [&](const Eigen::Vector3d& q) { return target.field.observed(q); });
   m.ok = icp.inlier_ratio >= o.min_inlier_ratio;
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
   return m;

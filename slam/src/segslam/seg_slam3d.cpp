@@ -41,7 +41,7 @@ struct SegSlam3d::Transition {
   bool closed_one = false;
   OctreeSubmap closed;
   std::size_t candidate = kNoSubmap;
-  double weight = 0.0;
+  std::vector<MatchEvent3> offers;  ///< the matches offered; the one taken is `chosen`
 };
 
 /// Dead reckoning from the last update's sweep to this one, and this sweep's beams.
@@ -135,15 +135,12 @@ SweepWindow SegSlam3d::window_after(std::size_t sweep) const {
       if (r.hit && (r.end - r.origin).norm() <= options_.filter.insert.max_range) all.push_back(to_start * r.end);
     }
   }
-  SweepWindow w;
-  const std::size_t every = std::max<std::size_t>(1, all.size() / static_cast<std::size_t>(options_.extras.window_points));
-  for (std::size_t i = 0; i < all.size(); i += every) w.scored.push_back(all[i]);
-  w.cloud = bin_points3(all, options_.segslam.matching.bin_size);
-  return w;
+  return make_sweep_window(all, static_cast<std::size_t>(options_.extras.window_points), options_.segslam.matching);
 }
 
 std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, const SweepWindow& w,
-                                                      std::vector<std::size_t>& ids, std::mt19937_64& rng) {
+                                                      std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
+                                                      std::mt19937_64& rng) {
   const MatchingOptions& o = options_.segslam.matching;
   const double now = sweeps_[last_update_].time;
   const auto sample = sample_local_map(segmap_, p.submap, kNoSubmap, o.sample_submaps, rng);
@@ -172,6 +169,7 @@ std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, con
     const WindowMatch3 m = cached_match(c.id, c.guess, w);
     if (!m.ok) continue;
     ids.push_back(c.id);
+    guesses.push_back(c.guess);
     out.push_back(m);
   }
   return out;
@@ -217,15 +215,20 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
   const double score = score_it ? predictive_score(p.submap.map, p.pose, w) : -1.0;
   const bool segment = should_segment(p.submap_updates, p.motion_error, score, so);
   std::vector<std::size_t> ids;
+  std::vector<Pose4> guesses;
   std::vector<WindowMatch3> matches;
   const bool periodic = p.updates_since_match >= mo.period_updates && p.submap_updates >= mo.period_updates;
   if (segment || periodic) {
-    matches = match_candidates(p, w, ids, rng);
+    matches = match_candidates(p, w, ids, guesses, rng);
     p.updates_since_match = 0;
   }
   std::vector<double> weights;
-  for (const WindowMatch3& m : matches) weights.push_back(m.weight);
+  for (std::size_t i = 0; i < matches.size(); ++i) {
+    weights.push_back(matches[i].weight);
+    t.offers.push_back(offer_of(ids[i], guesses[i], matches[i]));
+  }
   const ChoiceDraw draw = draw_submap_choice(segment, weights, mo, rng);  // eq. 3
+  if (draw.choice == SubmapChoice::kMatch) t.offers[draw.match].chosen = true;
   if (draw.choice == SubmapChoice::kSame) return t;
   const RangeSweep& at = sweeps_[last_update_];
   OctreeSubmap next;
@@ -236,7 +239,6 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
     insert_rays(next.map, rays_at(Pose4{}.with_tilt(e.roll, e.pitch), at.rays), options_.filter.insert);
   } else {
     t.candidate = ids[draw.match];
-    t.weight = matches[draw.match].weight;
     next.entry = matches[draw.match].pose;
     next.parent = t.candidate;
     next.map = segmap_.at(t.candidate).map;  // copy-on-write: shares every brick until written
@@ -323,16 +325,35 @@ void SegSlam3d::update(std::size_t k) {
   if (stats_.updates % 10 == 0) prune();
 }
 
+MatchEvent3 SegSlam3d::offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const {
+  MatchEvent3 e;
+  e.sweep = last_update_, e.candidate = candidate, e.weight = m.weight;
+  e.icp_error = m.icp_error, e.translation = m.translation, e.pose = m.pose, e.guess = guess;
+  e.structure = m.structure;
+  double best = std::numeric_limits<double>::infinity();
+  // The candidate's ancestors share its frame (a match child copies its parent's).
+  for (std::size_t id = candidate; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) {
+    for (const auto& [sweep, q] : segmap_.at(id).path) {
+      const double d = (q.position() - m.pose.position()).norm();
+      if (d < best) best = d, e.reference_sweep = sweep, e.reference = q;
+    }
+  }
+  return e;
+}
+
 void SegSlam3d::store_transitions(std::vector<Transition>& transitions) {
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     Transition& t = transitions[i];
+    for (const MatchEvent3& e : t.offers) {
+      stats_.match_offers.push_back(e);
+      if (e.chosen) stats_.match_events.push_back(e);
+    }
     if (!t.closed_one) continue;
     particles_[i].submap.predecessor = segmap_.add(std::move(t.closed));
     if (t.candidate == kNoSubmap) {
       ++stats_.segmentations;
     } else {
       ++stats_.matches;
-      stats_.match_events.push_back({last_update_, t.candidate, t.weight});
     }
   }
 }

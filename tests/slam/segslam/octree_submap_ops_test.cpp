@@ -45,10 +45,7 @@ SweepWindow window_of(const RangeLog3& log, std::size_t first, std::size_t last)
       if (r.hit && (r.end - r.origin).norm() < 15.0) all.push_back(to_start * (*log.sweeps[i].truth * r.end));
     }
   }
-  SweepWindow w;
-  for (std::size_t i = 0; i < all.size(); i += std::max<std::size_t>(1, all.size() / 300)) w.scored.push_back(all[i]);
-  w.cloud = bin_points3(all, 0.2);
-  return w;
+  return make_sweep_window(all, 300, segslam3d_defaults().matching);
 }
 
 TEST(Pose4, ComposeInverseAndBetweenAreConsistent) {

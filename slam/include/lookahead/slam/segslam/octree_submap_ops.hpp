@@ -18,15 +18,21 @@
 #include "lookahead/slam/octree/evidence_octree.hpp"
 #include "lookahead/slam/segslam/point_icp3.hpp"
 #include "lookahead/slam/segslam/segslam_options.hpp"
+#include "lookahead/slam/segslam/structure_fit.hpp"
 
 namespace lookahead::slam::segslam {
 
 /// A look-ahead window's end points in the level frame of the robot at its first sweep
 /// (dead-reckoned; position and yaw of that sweep, no roll or pitch).
 struct SweepWindow {
-  Points3 scored;  ///< a thinned sample for eq. 17 and the coarse search
-  Points3 cloud;   ///< every end point, binned, for ICP
+  Points3 scored;             ///< a thinned sample for eq. 17 and the coarse search
+  Points3 cloud;              ///< every end point, binned, for ICP
+  OrientedPoints3 structure;  ///< the cloud's walls, columns and cars (structure_fit.hpp)
 };
+
+/// A window of end points (level frame of the robot at its first sweep): `scored` thinned to
+/// about `scored_points`, the cloud binned, its structure points found.
+SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, const MatchingOptions& options);
 
 /// Eq. 17: the share of the window's scored points that `map` explains (an occupied voxel
 /// among the 27 around the point) with the robot at `pose` at the window's start; -1 when
@@ -36,23 +42,28 @@ double predictive_score(const EvidenceOctree& map, const Pose4& pose, const Swee
 /// Sec. 4.5.1 spatial proximity: does `map` hold observed voxels within `radius` of `p`?
 bool has_observed_near(const EvidenceOctree& map, const Eigen::Vector3d& p, double radius);
 
-/// Voxels within one voxel of an occupied one, as a dense bitmap over the map's occupied
-/// bounding box: O(1) tests for the coarse search.
+/// Voxels within one voxel of an occupied one, and voxels the map has observed at all, as a
+/// dense bitmap over the map's occupied bounding box: O(1) tests for the coarse search and
+/// the structure test.
 class NearOccupiedField {
  public:
   explicit NearOccupiedField(const EvidenceOctree& map);
   [[nodiscard]] bool near(const Eigen::Vector3d& p) const;
+  /// Is p's voxel known (free or occupied) or near an occupied one?
+  [[nodiscard]] bool observed(const Eigen::Vector3d& p) const;
 
  private:
   double resolution_ = 1.0;
   long x0_ = 0, y0_ = 0, z0_ = 0, nx_ = 0, ny_ = 0, nz_ = 0;
-  std::vector<std::uint8_t> bits_;
+  [[nodiscard]] std::uint8_t bits_at(const Eigen::Vector3d& p) const;
+  std::vector<std::uint8_t> bits_;  // 1: near occupied, 2: observed
 };
 
 /// What matching needs of a closed submap, built once per candidate.
 struct OctreeMatchTarget {
   NearOccupiedField field;
-  IcpTarget3 icp;  ///< occupied voxel centres, binned
+  IcpTarget3 icp;        ///< occupied voxel centres, binned
+  IcpTarget3 structure;  ///< those of them whose surface is structure, normals of their own
 };
 OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& options);
 
@@ -62,6 +73,7 @@ struct WindowMatch3 {
   double icp_error = 0.0;    ///< [m]
   double translation = 0.0;  ///< tau_m: distance from the guess [m]
   double weight = 0.0;       ///< eq. 18
+  StructureFit structure;    ///< the window's structure at `pose`
 };
 
 /// Sec. 4.5: a coarse search (x, y, yaw around `guess`, share of points near occupied voxels)

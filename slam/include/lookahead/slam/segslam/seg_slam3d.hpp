@@ -71,17 +71,31 @@ struct SegParticle3 {
   int updates_since_match = 0;  ///< since the last matching attempt
 };
 
+/// One match a particle was offered (and, if `chosen`, took): enough to check it against
+/// ground truth afterwards, when the candidate submap may have been pruned.
 struct MatchEvent3 {
   std::size_t sweep = 0;
   std::size_t candidate = 0;
   double weight = 0.0;
+  double icp_error = 0.0;    ///< eq. 18 err_ICP [m]
+  double translation = 0.0;  ///< eq. 18 tau [m]
+  Pose4 pose;                ///< the re-entry pose, in the candidate's frame
+  Pose4 guess;               ///< the particle's pose placed there by the map sample
+  StructureFit structure;    ///< the window's walls, columns and cars at `pose`
+  /// The candidate's path pose (its own or an ancestor's, same frame) nearest to `pose`:
+  /// reference.between(pose) is the match's claim about where the robot is now relative to
+  /// where it was at reference_sweep.
+  std::size_t reference_sweep = 0;
+  Pose4 reference;
+  bool chosen = false;
 };
 
 struct SegSlam3dStatistics {
   std::size_t sweeps = 0, updates = 0, resamplings = 0;
   std::size_t segmentations = 0, matches = 0, match_attempts = 0, pruned = 0;
   std::vector<double> neff;
-  std::vector<MatchEvent3> match_events;
+  std::vector<MatchEvent3> match_events;  ///< the matches taken
+  std::vector<MatchEvent3> match_offers;  ///< every match offered to a particle, taken or not
   double matching_seconds = 0;  ///< summed over threads: building targets, coarse search, ICP
 };
 
@@ -122,7 +136,9 @@ class SegSlam3d {
   Transition predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng);
   void advance(SegParticle3& p, const SweepModel& model, std::mt19937_64& rng) const;
   std::vector<WindowMatch3> match_candidates(const SegParticle3& p, const SweepWindow& w,
-                                             std::vector<std::size_t>& ids, std::mt19937_64& rng);
+                                             std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
+                                             std::mt19937_64& rng);
+  MatchEvent3 offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const;
   WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
   void store_transitions(std::vector<Transition>& transitions);
   void prune();
