@@ -62,13 +62,15 @@ nlohmann::json match_json(const slam::segslam::MatchEvent3& e, const slam::Range
                    {"candidate", e.candidate},
                    {"weight", e.weight},
                    {"icp_error_m", e.icp_error},
+                   {"all_points_error_m", e.all_points_error},
                    {"translation_m", e.translation},
                    {"pose", {e.pose.x, e.pose.y, e.pose.z, e.pose.yaw}},
                    {"reference_sweep", e.reference_sweep},
                    {"chosen", e.chosen},
                    {"structure_points", e.structure.points},
                    {"structure_inlier_ratio", e.structure.inlier_ratio},
-                   {"structure_error_m", e.structure.mean_error}};
+                   {"structure_error_m", e.structure.mean_error},
+                   {"structure_free_ratio", e.structure.free_ratio}};
   if (!log.has_truth()) return j;
   const slam::Pose4 truth = slam::Pose4::level_of(*log.sweeps.at(e.reference_sweep).truth)
                                 .between(slam::Pose4::level_of(*log.sweeps.at(e.sweep).truth));

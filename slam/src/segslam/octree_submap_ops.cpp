@@ -132,7 +132,10 @@ std::uint8_t NearOccupiedField::bits_at(const Eigen::Vector3d& p) const {
 
 bool NearOccupiedField::near(const Eigen::Vector3d& p) const { return (bits_at(p) & 1) != 0; }
 
-bool NearOccupiedField::observed(const Eigen::Vector3d& p) const { return bits_at(p) != 0; }
+Seen NearOccupiedField::seen(const Eigen::Vector3d& p) const {
+  const std::uint8_t b = bits_at(p);
+  return (b & 1) != 0 ? Seen::kNearOccupied : b != 0 ? Seen::kFree : Seen::kUnknown;
+}
 
 OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& o) {
   Points3 occupied;
@@ -155,18 +158,20 @@ SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, 
 }
 
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w, const Pose4& guess,
-                          const MatchingOptions& o) {
+                          const MatchingOptions& o, const StructureTestOptions& so) {
   WindowMatch3 m;
   if (target.icp.size() < 10 || w.cloud.size() < 10) return m;
   // The near field reaches one voxel around a surface: steps of 1.5 voxels miss no peak.
   const Pose4 seed = coarse_search(target.field, w.scored, guess, o, 1.5 * o.bin_size);
   const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance});
   m.pose = icp.transform;
-  m.icp_error = icp.mean_error;
+  m.all_points_error = icp.mean_error;
   m.translation = (m.pose.position() - guess.position()).norm();
   m.structure = structure_fit(w.structure, target.structure, m.pose,
-                              [&](const Eigen::Vector3d& q) { return target.field.observed(q); });
-  m.ok = icp.inlier_ratio >= o.min_inlier_ratio;
+                              [&](const Eigen::Vector3d& q) { return target.field.seen(q); });
+  m.icp_error = m.structure.mean_error;
+  m.ok = icp.inlier_ratio >= o.min_inlier_ratio && m.structure.points >= so.min_points &&
+         m.structure.inlier_ratio >= so.min_inlier_ratio && m.structure.free_ratio <= so.max_free_ratio;
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
   return m;
 }

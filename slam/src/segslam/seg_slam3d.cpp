@@ -26,12 +26,14 @@ SegSlamOptions segslam3d_defaults() {
   // One sweep per second: 3 s of look-ahead is three sweeps, a segment at least 10 m.
   o.segmentation.lookahead_s = 3.0;
   o.segmentation.min_segment_updates = 10;
-  // Bins of one voxel (0.2 m); ICP errors and their eq. 18 scale grow with the voxel.
+  // Bins of one voxel (0.2 m).
   o.matching.bin_size = 0.2;
   o.matching.icp_iterations = 20;
   o.matching.icp_max_distance = 0.5;
-  o.matching.icp_sigma = 0.08;
-  o.matching.null_error = 0.12;
+  // Eq. 18 on the structure points' error (match_window): right re-entries showed 0.02-0.1 m
+  // on the garage logs (README).
+  o.matching.icp_sigma = 0.05;
+  o.matching.null_error = 0.08;
   o.matching.proximity_radius = 4.0;
   o.offline.map_samples = 5;
   return o;
@@ -88,6 +90,10 @@ SegSlam3d::SegSlam3d(const SegSlam3dOptions& options)
   if (e.warmup_updates < 0 || !(e.proximity_height > 0) || e.window_points < 10) {
     throw std::invalid_argument("segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10");
   }
+  if (!(e.structure.min_inlier_ratio >= 0 && e.structure.min_inlier_ratio <= 1) ||
+      !(e.structure.max_free_ratio >= 0 && e.structure.max_free_ratio <= 1)) {
+    throw std::invalid_argument("segslam3d: structure.min_inlier_ratio and max_free_ratio in 0..1");
+  }
 }
 
 int SegSlam3d::thread_count() const {
@@ -120,6 +126,7 @@ void SegSlam3d::initialize(const RangeSweep& first) {
   p.submap.path.push_back({0, p.pose});
   particles_.assign(static_cast<std::size_t>(options_.filter.particles), p);
   next_pending_ = 1;
+  motion_error_sum_.assign(1, 0.0);
   stats_.updates = 1;
   stats_.neff.push_back(static_cast<double>(options_.filter.particles));
 }
@@ -193,7 +200,7 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
     const Pose4 rounded{std::get<1>(key) * 0.5, std::get<2>(key) * 0.5, std::get<3>(key) * 0.5,
                         normalize_angle(std::get<4>(key) * 0.1)};
     if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
-    m = match_window(*target, w, rounded, options_.segslam.matching);
+    m = match_window(*target, w, rounded, options_.segslam.matching, options_.extras.structure);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     targets_[candidate] = target;
     match_cache_.emplace(key, m);
@@ -201,8 +208,20 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
     stats_.matching_seconds += seconds_since(start);
   }
   m.translation = (m.pose.position() - guess.position()).norm();
-  m.weight = m.ok ? match_weight(m.icp_error, m.translation, options_.segslam.matching) : 0.0;
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, tau_options(candidate)) : 0.0;
   return m;
+}
+
+MatchingOptions SegSlam3d::tau_options(std::size_t candidate) const {
+  // Deviation: eq. 18's p(tau^2) widens with the eq. 13-14 error accumulated since the
+  // candidate was left, as sec. 4.5.2 spreads the localisation filter ("candidate positions
+  // at the end of long loops will be uncertain"): with a fixed 1.5 m, right re-entries
+  // after the garage loop (3-5 m from the map sample's guess) weighed nothing.
+  MatchingOptions o = options_.segslam.matching;
+  const double since = motion_error_sum_.at(last_update_) -
+                       motion_error_sum_.at(segmap_.at(candidate).interval.last_scan);
+  o.translation_sigma = std::hypot(o.translation_sigma, since);
+  return o;
 }
 
 SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng) {
@@ -290,6 +309,8 @@ void SegSlam3d::update(std::size_t k) {
   for (std::size_t i = 0; i < now.rays.size(); i += static_cast<std::size_t>(options_.filter.insert_ray_step)) {
     s.rays.push_back(now.rays[i]);
   }
+  motion_error_sum_.resize(k + 1, 0.0);
+  motion_error_sum_[k] = motion_error_sum_[last_update_] + s.motion_error;
   const SweepWindow w = window_after(last_update_);
   match_cache_.clear();
   const int n = static_cast<int>(particles_.size());
@@ -328,7 +349,8 @@ void SegSlam3d::update(std::size_t k) {
 MatchEvent3 SegSlam3d::offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const {
   MatchEvent3 e;
   e.sweep = last_update_, e.candidate = candidate, e.weight = m.weight;
-  e.icp_error = m.icp_error, e.translation = m.translation, e.pose = m.pose, e.guess = guess;
+  e.icp_error = m.icp_error, e.all_points_error = m.all_points_error;
+  e.translation = m.translation, e.pose = m.pose, e.guess = guess;
   e.structure = m.structure;
   double best = std::numeric_limits<double>::infinity();
   // The candidate's ancestors share its frame (a match child copies its parent's).

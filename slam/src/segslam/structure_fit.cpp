@@ -27,15 +27,17 @@ OrientedPoints3 structure_points(const IcpTarget3& cloud) {
 }
 
 StructureFit structure_fit(const OrientedPoints3& window, const IcpTarget3& target, const Pose4& pose,
-                           const std::function<bool(const Eigen::Vector3d&)>& observed) {
+                           const std::function<Seen(const Eigen::Vector3d&)>& seen) {
   StructureFit f;
   const Pose3 placed = pose.level_pose3();
   double error = 0;
-  std::size_t inliers = 0;
+  std::size_t inliers = 0, free = 0;
   for (std::size_t i = 0; i < window.points.size(); ++i) {
     const Eigen::Vector3d q = placed * window.points[i];
-    if (!observed(q)) continue;
+    const Seen here = seen(q);
+    if (here == Seen::kUnknown) continue;
     ++f.points;
+    if (here == Seen::kFree) ++free;
     const long j = target.nearest(q);
     if (j < 0 || target.normal(j).isZero()) continue;
     const Eigen::Vector3d& n = target.normal(j);
@@ -44,7 +46,10 @@ StructureFit structure_fit(const OrientedPoints3& window, const IcpTarget3& targ
     error += std::abs(n.dot(q - target.point(j)));
     ++inliers;
   }
-  if (f.points > 0) f.inlier_ratio = static_cast<double>(inliers) / static_cast<double>(f.points);
+  if (f.points > 0) {
+    f.inlier_ratio = static_cast<double>(inliers) / static_cast<double>(f.points);
+    f.free_ratio = static_cast<double>(free) / static_cast<double>(f.points);
+  }
   f.mean_error = inliers > 0 ? error / static_cast<double>(inliers) : target.max_distance();
   return f;
 }

@@ -49,8 +49,8 @@ class NearOccupiedField {
  public:
   explicit NearOccupiedField(const EvidenceOctree& map);
   [[nodiscard]] bool near(const Eigen::Vector3d& p) const;
-  /// Is p's voxel known (free or occupied) or near an occupied one?
-  [[nodiscard]] bool observed(const Eigen::Vector3d& p) const;
+  /// Near an occupied voxel, else known (free), else unknown.
+  [[nodiscard]] Seen seen(const Eigen::Vector3d& p) const;
 
  private:
   double resolution_ = 1.0;
@@ -70,7 +70,8 @@ OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptio
 struct WindowMatch3 {
   bool ok = false;
   Pose4 pose;                ///< the robot at the window's start, in the candidate's frame
-  double icp_error = 0.0;    ///< [m]
+  double icp_error = 0.0;    ///< eq. 18 err_ICP: the structure points' mean error [m]
+  double all_points_error = 0.0;  ///< ICP's mean error over all points, floor and ceiling too [m]
   double translation = 0.0;  ///< tau_m: distance from the guess [m]
   double weight = 0.0;       ///< eq. 18
   StructureFit structure;    ///< the window's structure at `pose`
@@ -78,8 +79,11 @@ struct WindowMatch3 {
 
 /// Sec. 4.5: a coarse search (x, y, yaw around `guess`, share of points near occupied voxels)
 /// seeds point-to-plane ICP of the binned window onto the candidate; weighted by eq. 18.
+/// Deviation: eq. 18's err_ICP is the mean error of the window's structure points (walls,
+/// columns, cars; structure_fit.hpp), not of all points, and a match needs enough of them
+/// fitted (`structure`): floor and ceiling fit a wrong re-entry as well as the right one.
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& guess,
-                          const MatchingOptions& options);
+                          const MatchingOptions& options, const StructureTestOptions& structure = {});
 
 /// Submaps of a map sample summed into one set of voxels (independence: overlapping evidence
 /// adds, clamped to the map's bounds); a match child pasted after its parent adds only what

@@ -49,6 +49,8 @@ struct SegSlam3dExtras {
   double proximity_height = 1.0;
   /// End points of the look-ahead window scored by eq. 17 and the coarse search. >= 10.
   int window_points = 300;
+  /// What a match's walls, columns and cars must show (structure_fit.hpp).
+  StructureTestOptions structure;
 };
 
 /// The SegSLAM options for 3D sweeps: the 2D defaults with the bins, ICP and eq. 18 scales
@@ -77,7 +79,8 @@ struct MatchEvent3 {
   std::size_t sweep = 0;
   std::size_t candidate = 0;
   double weight = 0.0;
-  double icp_error = 0.0;    ///< eq. 18 err_ICP [m]
+  double icp_error = 0.0;    ///< eq. 18 err_ICP (structure points) [m]
+  double all_points_error = 0.0;  ///< ICP's mean error over all points [m]
   double translation = 0.0;  ///< eq. 18 tau [m]
   Pose4 pose;                ///< the re-entry pose, in the candidate's frame
   Pose4 guess;               ///< the particle's pose placed there by the map sample
@@ -140,6 +143,7 @@ class SegSlam3d {
                                              std::mt19937_64& rng);
   MatchEvent3 offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const;
   WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
+  [[nodiscard]] MatchingOptions tau_options(std::size_t candidate) const;
   void store_transitions(std::vector<Transition>& transitions);
   void prune();
   [[nodiscard]] int thread_count() const;
@@ -148,6 +152,7 @@ class SegSlam3d {
   std::vector<SegParticle3> particles_;
   OctreeSegMap segmap_;
   std::vector<RangeSweep> sweeps_;
+  std::vector<double> motion_error_sum_;  ///< eq. 13-14 error accumulated up to each updated sweep [m]
   std::size_t next_pending_ = 0;
   std::size_t last_update_ = 0;
   std::mt19937_64 rng_;

@@ -32,10 +32,24 @@ struct OrientedPoints3 {
 /// them): those with a normal whose |z| is below kStructureMaxNormalZ.
 OrientedPoints3 structure_points(const IcpTarget3& cloud);
 
+/// What the candidate's map says of a place.
+enum class Seen { kUnknown, kFree, kNearOccupied };
+
 struct StructureFit {
   std::size_t points = 0;     ///< structure points tested: those landing where the target has observed
   double inlier_ratio = 0.0;  ///< share with a structure correspondence of the same orientation
   double mean_error = 0.0;    ///< their mean point-to-plane distance [m]
+  double free_ratio = 0.0;    ///< share landing in space the candidate saw free: contradictions
+};
+
+/// When a match's structure counts as fitted.
+struct StructureTestOptions {
+  std::size_t min_points = 50;     ///< structure points landing where the candidate observed
+  double min_inlier_ratio = 0.15;  ///< share of them with a corresponding surface. 0..1
+  /// Share of them that may land where the candidate saw free space: a right re-entry puts
+  /// surfaces where the candidate saw surfaces or nothing, not where its beams passed
+  /// (right re-entries 0-0.02, wrong ones mostly above 0.07 on --data-seed 2). 0..1
+  double max_free_ratio = 0.05;
 };
 
 /// `window` placed by `pose` against a target built from structure points only. Only points
@@ -45,6 +59,6 @@ struct StructureFit {
 /// column point next to a floor voxel, or a car's end against a car's side, is not fitted);
 /// with no correspondence at all, mean_error is that max distance.
 StructureFit structure_fit(const OrientedPoints3& window, const IcpTarget3& target, const Pose4& pose,
-                           const std::function<bool(const Eigen::Vector3d&)>& observed);
+                           const std::function<Seen(const Eigen::Vector3d&)>& seen);
 
 }  // namespace lookahead::slam::segslam
