@@ -148,13 +148,18 @@ OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptio
   return {NearOccupiedField(map), std::move(icp), std::move(structure)};
 }
 
-SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, const MatchingOptions& o) {
+SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, const MatchingOptions& o,
+                              bool with_structure) {
   SweepWindow w;
   const std::size_t every = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, scored_points));
   for (std::size_t i = 0; i < points.size(); i += every) w.scored.push_back(points[i]);
   w.cloud = bin_points3(points, o.bin_size);
-  w.structure = structure_points(IcpTarget3(w.cloud, o.icp_max_distance));
+  if (with_structure) find_structure(w, o);
   return w;
+}
+
+void find_structure(SweepWindow& w, const MatchingOptions& o) {
+  w.structure = structure_points(IcpTarget3(w.cloud, o.icp_max_distance));
 }
 
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w, const Pose4& guess,

@@ -145,7 +145,18 @@ SweepWindow SegSlam3d::window_after(std::size_t sweep) const {
       if (r.hit && (r.end - r.origin).norm() <= options_.filter.insert.max_range) all.push_back(to_start * r.end);
     }
   }
-  return make_sweep_window(all, static_cast<std::size_t>(options_.extras.window_points), options_.segslam.matching);
+  // The structure points only when a particle matches (window_with_structure).
+  return make_sweep_window(all, static_cast<std::size_t>(options_.extras.window_points), options_.segslam.matching,
+                           false);
+}
+
+const SweepWindow& SegSlam3d::window_with_structure(const SweepWindow& w) {
+  const std::lock_guard<std::mutex> lock(window_mutex_);
+  if (!matched_window_) {
+    matched_window_ = w;
+    find_structure(*matched_window_, options_.segslam.matching);
+  }
+  return *matched_window_;
 }
 
 std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, const SweepWindow& w,
@@ -203,7 +214,7 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
     const Pose4 rounded{std::get<1>(key) * 0.5, std::get<2>(key) * 0.5, std::get<3>(key) * 0.5,
                         normalize_angle(std::get<4>(key) * 0.1)};
     if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
-    m = match_window(*target, w, rounded, options_.segslam.matching, options_.extras.structure);
+    m = match_window(*target, window_with_structure(w), rounded, options_.segslam.matching, options_.extras.structure);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     targets_[candidate] = target;
     match_cache_.emplace(key, m);
@@ -316,6 +327,7 @@ void SegSlam3d::update(std::size_t k) {
   motion_error_sum_[k] = motion_error_sum_[last_update_] + s.motion_error;
   const SweepWindow w = window_after(last_update_);
   match_cache_.clear();
+  matched_window_.reset();
   const int n = static_cast<int>(particles_.size());
   std::vector<Transition> transitions(particles_.size());
   std::vector<double> gain(particles_.size(), 0.0);

@@ -31,8 +31,11 @@ struct SweepWindow {
 };
 
 /// A window of end points (level frame of the robot at its first sweep): `scored` thinned to
-/// about `scored_points`, the cloud binned, its structure points found.
-SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, const MatchingOptions& options);
+/// about `scored_points`, the cloud binned, and (`with_structure`) its structure points found.
+SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, const MatchingOptions& options,
+                              bool with_structure = true);
+/// Finds the window's structure points (normals by PCA: the costly part, left for matching).
+void find_structure(SweepWindow& window, const MatchingOptions& options);
 
 /// Eq. 17: the share of the window's scored points that `map` explains (an occupied voxel
 /// among the 27 around the point) with the robot at `pose` at the window's start; -1 when

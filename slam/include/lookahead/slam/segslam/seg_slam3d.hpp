@@ -22,6 +22,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <tuple>
 #include <vector>
@@ -144,6 +145,7 @@ class SegSlam3d {
   MatchEvent3 offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const;
   WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
   [[nodiscard]] MatchingOptions tau_options(std::size_t candidate) const;
+  const SweepWindow& window_with_structure(const SweepWindow& w);
   void store_transitions(std::vector<Transition>& transitions);
   void prune();
   [[nodiscard]] int thread_count() const;
@@ -160,6 +162,8 @@ class SegSlam3d {
   std::mutex cache_mutex_;
   std::map<std::size_t, std::shared_ptr<const OctreeMatchTarget>> targets_;
   std::map<std::tuple<std::size_t, long, long, long, long>, WindowMatch3> match_cache_;
+  std::mutex window_mutex_;
+  std::optional<SweepWindow> matched_window_;  ///< this update's window with its structure
 };
 
 }  // namespace lookahead::slam::segslam
