@@ -30,6 +30,8 @@ def main(paths):
     print('|---|---:|---:|---:|---:|---:|')
     for p in paths:
         f = os.path.join(p, 'run.json') if os.path.isdir(p) else p
+        if not f.endswith('.json'):
+            continue  # e.g. the run's .log next to its folder
         j = json.load(open(f))
         o = j.get('match_offers', [])
         taken = [e for e in o if e['chosen']]

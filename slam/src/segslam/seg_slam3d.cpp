@@ -35,7 +35,7 @@ SegSlamOptions segslam3d_defaults() {
   o.matching.icp_sigma = 0.05;
   o.matching.null_error = 0.08;
   o.matching.proximity_radius = 4.0;
-  // The map sample's guess was up to 0.35 rad off in yaw at the garage loop's closure
+  // The map sample's guess was up to 0.36 rad off in yaw at the garage loop's closure
   // (logged match offers, README): the coarse search must reach that far.
   o.matching.search_angle = 0.4;
   o.offline.map_samples = 5;

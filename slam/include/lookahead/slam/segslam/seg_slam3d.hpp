@@ -14,7 +14,9 @@
 // that class is written against laser scans and the 2D particle step and is being extended
 // (locking, merging) elsewhere; the graph code and the eq. 3/13-14/18 functions are shared.
 // Submap frames are level (x, y, z, yaw), and proximity winnowing also bounds the height
-// difference (the garage's decks share x, y).
+// difference (the garage's decks share x, y). A match is scored on the window's structure
+// points and vetoed when they land in the candidate's free space (structure_fit.hpp), and
+// eq. 18's p(tau^2) widens with the eq. 13-14 error since the candidate (tau_options).
 #pragma once
 
 #include <cstddef>
