@@ -55,7 +55,35 @@ void write_trajectory(const std::string& path, const slam::RangeLog3& log, const
   }
 }
 
-nlohmann::json statistics_json(const SegSlam3d& f) {
+/// A match event, and with ground truth how far its claim (where the robot is relative to
+/// the candidate's nearest path pose) is from the truth: the check of a re-entry.
+nlohmann::json match_json(const slam::segslam::MatchEvent3& e, const slam::RangeLog3& log) {
+  nlohmann::json j{{"sweep", e.sweep},
+                   {"candidate", e.candidate},
+                   {"weight", e.weight},
+                   {"icp_error_m", e.icp_error},
+                   {"all_points_error_m", e.all_points_error},
+                   {"translation_m", e.translation},
+                   {"pose", {e.pose.x, e.pose.y, e.pose.z, e.pose.yaw}},
+                   {"reference_sweep", e.reference_sweep},
+                   {"chosen", e.chosen},
+                   {"structure_points", e.structure.points},
+                   {"structure_inlier_ratio", e.structure.inlier_ratio},
+                   {"structure_error_m", e.structure.mean_error},
+                   {"structure_free_ratio", e.structure.free_ratio}};
+  if (!log.has_truth()) return j;
+  const slam::Pose4 truth = slam::Pose4::level_of(*log.sweeps.at(e.reference_sweep).truth)
+                                .between(slam::Pose4::level_of(*log.sweeps.at(e.sweep).truth));
+  const slam::Pose4 off = truth.between(e.reference.between(e.pose));
+  const slam::Pose4 guess_off = truth.between(e.reference.between(e.guess));
+  j["truth_position_error_m"] = off.position().norm();
+  j["truth_yaw_error_rad"] = off.yaw;
+  j["guess_truth_position_error_m"] = guess_off.position().norm();
+  j["guess_truth_yaw_error_rad"] = guess_off.yaw;
+  return j;
+}
+
+nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
   const auto& st = f.statistics();
   nlohmann::json j;
   j["sweeps"] = st.sweeps;
@@ -68,9 +96,11 @@ nlohmann::json statistics_json(const SegSlam3d& f) {
   j["pruned_submaps"] = st.pruned;
   j["live_submaps"] = f.segmap().live_count();
   j["segments"] = f.segmap().segment_count();
-  nlohmann::json events = nlohmann::json::array();
-  for (const auto& e : st.match_events) events.push_back({{"sweep", e.sweep}, {"candidate", e.candidate}, {"weight", e.weight}});
+  nlohmann::json events = nlohmann::json::array(), offers = nlohmann::json::array();
+  for (const auto& e : st.match_events) events.push_back(match_json(e, log));
+  for (const auto& e : st.match_offers) offers.push_back(match_json(e, log));
   j["match_events"] = events;
+  j["match_offers"] = offers;
   j["neff_history"] = st.neff;
   return j;
 }
@@ -126,7 +156,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
       run.out + "/trajectory.png", slam::top_view(best_map.best.map), odometry, filter.segmented_trajectory(best),
       fmt::format("slam3d {} - segslam, {} particles (top view, min-entropy map)", run.name, filter.particles().size()));
 
-  nlohmann::json j = statistics_json(filter);
+  nlohmann::json j = statistics_json(filter, log);
   j["input"] = run.input;
   j["method"] = "segslam";
   j["particles"] = filter.particles().size();

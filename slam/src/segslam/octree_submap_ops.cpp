@@ -111,18 +111,30 @@ NearOccupiedField::NearOccupiedField(const EvidenceOctree& map) : resolution_(ma
       for (long dy = 0; dy <= 2; ++dy) {
         for (long dx = 0; dx <= 2; ++dx) {
           const long x = k.x - x0_ - 1 + dx, y = k.y - y0_ - 1 + dy, z = k.z - z0_ - 1 + dz;
-          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] = 1;
+          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 1;
         }
       }
     }
   }
+  map.for_each_voxel([&](const OctreeKey& k, float) {
+    const long x = k.x - x0_, y = k.y - y0_, z = k.z - z0_;
+    if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return;
+    bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 2;
+  });
 }
 
-bool NearOccupiedField::near(const Eigen::Vector3d& p) const {
+std::uint8_t NearOccupiedField::bits_at(const Eigen::Vector3d& p) const {
   const OctreeGrid g(resolution_);
   const long x = g.axis_key(p.x()) - x0_, y = g.axis_key(p.y()) - y0_, z = g.axis_key(p.z()) - z0_;
-  if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return false;
-  return bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] != 0;
+  if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return 0;
+  return bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)];
+}
+
+bool NearOccupiedField::near(const Eigen::Vector3d& p) const { return (bits_at(p) & 1) != 0; }
+
+Seen NearOccupiedField::seen(const Eigen::Vector3d& p) const {
+  const std::uint8_t b = bits_at(p);
+  return (b & 1) != 0 ? Seen::kNearOccupied : b != 0 ? Seen::kFree : Seen::kUnknown;
 }
 
 OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& o) {
@@ -131,20 +143,40 @@ OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptio
   map.for_each_voxel([&](const OctreeKey& k, float l) {
     if (l > above) occupied.push_back(map.grid().centre_of(k));
   });
-  return {NearOccupiedField(map), IcpTarget3(bin_points3(occupied, o.bin_size), o.icp_max_distance)};
+  IcpTarget3 icp(bin_points3(occupied, o.bin_size), o.icp_max_distance);
+  IcpTarget3 structure(structure_points(icp).points, o.icp_max_distance);
+  return {NearOccupiedField(map), std::move(icp), std::move(structure)};
+}
+
+SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, const MatchingOptions& o,
+                              bool with_structure) {
+  SweepWindow w;
+  const std::size_t every = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, scored_points));
+  for (std::size_t i = 0; i < points.size(); i += every) w.scored.push_back(points[i]);
+  w.cloud = bin_points3(points, o.bin_size);
+  if (with_structure) find_structure(w, o);
+  return w;
+}
+
+void find_structure(SweepWindow& w, const MatchingOptions& o) {
+  w.structure = structure_points(IcpTarget3(w.cloud, o.icp_max_distance));
 }
 
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w, const Pose4& guess,
-                          const MatchingOptions& o) {
+                          const MatchingOptions& o, const StructureTestOptions& so) {
   WindowMatch3 m;
   if (target.icp.size() < 10 || w.cloud.size() < 10) return m;
   // The near field reaches one voxel around a surface: steps of 1.5 voxels miss no peak.
   const Pose4 seed = coarse_search(target.field, w.scored, guess, o, 1.5 * o.bin_size);
   const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance});
   m.pose = icp.transform;
-  m.icp_error = icp.mean_error;
+  m.all_points_error = icp.mean_error;
   m.translation = (m.pose.position() - guess.position()).norm();
-  m.ok = icp.inlier_ratio >= o.min_inlier_ratio;
+  m.structure = structure_fit(w.structure, target.structure, m.pose,
+                              [&](const Eigen::Vector3d& q) { return target.field.seen(q); });
+  m.icp_error = m.structure.mean_error;
+  m.ok = icp.inlier_ratio >= o.min_inlier_ratio && m.structure.points >= so.min_points &&
+         m.structure.inlier_ratio >= so.min_inlier_ratio && m.structure.free_ratio <= so.max_free_ratio;
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
   return m;
 }

@@ -26,13 +26,18 @@ SegSlamOptions segslam3d_defaults() {
   // One sweep per second: 3 s of look-ahead is three sweeps, a segment at least 10 m.
   o.segmentation.lookahead_s = 3.0;
   o.segmentation.min_segment_updates = 10;
-  // Bins of one voxel (0.2 m); ICP errors and their eq. 18 scale grow with the voxel.
+  // Bins of one voxel (0.2 m).
   o.matching.bin_size = 0.2;
   o.matching.icp_iterations = 20;
   o.matching.icp_max_distance = 0.5;
-  o.matching.icp_sigma = 0.08;
-  o.matching.null_error = 0.12;
+  // Eq. 18 on the structure points' error (match_window): right re-entries showed 0.02-0.1 m
+  // on the garage logs (README).
+  o.matching.icp_sigma = 0.05;
+  o.matching.null_error = 0.08;
   o.matching.proximity_radius = 4.0;
+  // The map sample's guess was up to 0.36 rad off in yaw at the garage loop's closure
+  // (logged match offers, README): the coarse search must reach that far.
+  o.matching.search_angle = 0.4;
   o.offline.map_samples = 5;
   return o;
 }
@@ -41,7 +46,7 @@ struct SegSlam3d::Transition {
   bool closed_one = false;
   OctreeSubmap closed;
   std::size_t candidate = kNoSubmap;
-  double weight = 0.0;
+  std::vector<MatchEvent3> offers;  ///< the matches offered; the one taken is `chosen`
 };
 
 /// Dead reckoning from the last update's sweep to this one, and this sweep's beams.
@@ -88,6 +93,10 @@ SegSlam3d::SegSlam3d(const SegSlam3dOptions& options)
   if (e.warmup_updates < 0 || !(e.proximity_height > 0) || e.window_points < 10) {
     throw std::invalid_argument("segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10");
   }
+  if (!(e.structure.min_inlier_ratio >= 0 && e.structure.min_inlier_ratio <= 1) ||
+      !(e.structure.max_free_ratio >= 0 && e.structure.max_free_ratio <= 1)) {
+    throw std::invalid_argument("segslam3d: structure.min_inlier_ratio and max_free_ratio in 0..1");
+  }
 }
 
 int SegSlam3d::thread_count() const {
@@ -120,6 +129,7 @@ void SegSlam3d::initialize(const RangeSweep& first) {
   p.submap.path.push_back({0, p.pose});
   particles_.assign(static_cast<std::size_t>(options_.filter.particles), p);
   next_pending_ = 1;
+  motion_error_sum_.assign(1, 0.0);
   stats_.updates = 1;
   stats_.neff.push_back(static_cast<double>(options_.filter.particles));
 }
@@ -135,15 +145,23 @@ SweepWindow SegSlam3d::window_after(std::size_t sweep) const {
       if (r.hit && (r.end - r.origin).norm() <= options_.filter.insert.max_range) all.push_back(to_start * r.end);
     }
   }
-  SweepWindow w;
-  const std::size_t every = std::max<std::size_t>(1, all.size() / static_cast<std::size_t>(options_.extras.window_points));
-  for (std::size_t i = 0; i < all.size(); i += every) w.scored.push_back(all[i]);
-  w.cloud = bin_points3(all, options_.segslam.matching.bin_size);
-  return w;
+  // The structure points only when a particle matches (window_with_structure).
+  return make_sweep_window(all, static_cast<std::size_t>(options_.extras.window_points), options_.segslam.matching,
+                           false);
+}
+
+const SweepWindow& SegSlam3d::window_with_structure(const SweepWindow& w) {
+  const std::lock_guard<std::mutex> lock(window_mutex_);
+  if (!matched_window_) {
+    matched_window_ = w;
+    find_structure(*matched_window_, options_.segslam.matching);
+  }
+  return *matched_window_;
 }
 
 std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, const SweepWindow& w,
-                                                      std::vector<std::size_t>& ids, std::mt19937_64& rng) {
+                                                      std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
+                                                      std::mt19937_64& rng) {
   const MatchingOptions& o = options_.segslam.matching;
   const double now = sweeps_[last_update_].time;
   const auto sample = sample_local_map(segmap_, p.submap, kNoSubmap, o.sample_submaps, rng);
@@ -172,6 +190,7 @@ std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, con
     const WindowMatch3 m = cached_match(c.id, c.guess, w);
     if (!m.ok) continue;
     ids.push_back(c.id);
+    guesses.push_back(c.guess);
     out.push_back(m);
   }
   return out;
@@ -195,7 +214,7 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
     const Pose4 rounded{std::get<1>(key) * 0.5, std::get<2>(key) * 0.5, std::get<3>(key) * 0.5,
                         normalize_angle(std::get<4>(key) * 0.1)};
     if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
-    m = match_window(*target, w, rounded, options_.segslam.matching);
+    m = match_window(*target, window_with_structure(w), rounded, options_.segslam.matching, options_.extras.structure);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     targets_[candidate] = target;
     match_cache_.emplace(key, m);
@@ -203,8 +222,20 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
     stats_.matching_seconds += seconds_since(start);
   }
   m.translation = (m.pose.position() - guess.position()).norm();
-  m.weight = m.ok ? match_weight(m.icp_error, m.translation, options_.segslam.matching) : 0.0;
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, tau_options(candidate)) : 0.0;
   return m;
+}
+
+MatchingOptions SegSlam3d::tau_options(std::size_t candidate) const {
+  // Deviation: eq. 18's p(tau^2) widens with the eq. 13-14 error accumulated since the
+  // candidate was left, as sec. 4.5.2 spreads the localisation filter ("candidate positions
+  // at the end of long loops will be uncertain"): with a fixed 1.5 m, right re-entries
+  // after the garage loop (3-5 m from the map sample's guess) weighed nothing.
+  MatchingOptions o = options_.segslam.matching;
+  const double since = motion_error_sum_.at(last_update_) -
+                       motion_error_sum_.at(segmap_.at(candidate).interval.last_scan);
+  o.translation_sigma = std::hypot(o.translation_sigma, since);
+  return o;
 }
 
 SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng) {
@@ -217,15 +248,20 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
   const double score = score_it ? predictive_score(p.submap.map, p.pose, w) : -1.0;
   const bool segment = should_segment(p.submap_updates, p.motion_error, score, so);
   std::vector<std::size_t> ids;
+  std::vector<Pose4> guesses;
   std::vector<WindowMatch3> matches;
   const bool periodic = p.updates_since_match >= mo.period_updates && p.submap_updates >= mo.period_updates;
   if (segment || periodic) {
-    matches = match_candidates(p, w, ids, rng);
+    matches = match_candidates(p, w, ids, guesses, rng);
     p.updates_since_match = 0;
   }
   std::vector<double> weights;
-  for (const WindowMatch3& m : matches) weights.push_back(m.weight);
+  for (std::size_t i = 0; i < matches.size(); ++i) {
+    weights.push_back(matches[i].weight);
+    t.offers.push_back(offer_of(ids[i], guesses[i], matches[i]));
+  }
   const ChoiceDraw draw = draw_submap_choice(segment, weights, mo, rng);  // eq. 3
+  if (draw.choice == SubmapChoice::kMatch) t.offers[draw.match].chosen = true;
   if (draw.choice == SubmapChoice::kSame) return t;
   const RangeSweep& at = sweeps_[last_update_];
   OctreeSubmap next;
@@ -236,7 +272,6 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
     insert_rays(next.map, rays_at(Pose4{}.with_tilt(e.roll, e.pitch), at.rays), options_.filter.insert);
   } else {
     t.candidate = ids[draw.match];
-    t.weight = matches[draw.match].weight;
     next.entry = matches[draw.match].pose;
     next.parent = t.candidate;
     next.map = segmap_.at(t.candidate).map;  // copy-on-write: shares every brick until written
@@ -288,8 +323,11 @@ void SegSlam3d::update(std::size_t k) {
   for (std::size_t i = 0; i < now.rays.size(); i += static_cast<std::size_t>(options_.filter.insert_ray_step)) {
     s.rays.push_back(now.rays[i]);
   }
+  motion_error_sum_.resize(k + 1, 0.0);
+  motion_error_sum_[k] = motion_error_sum_[last_update_] + s.motion_error;
   const SweepWindow w = window_after(last_update_);
   match_cache_.clear();
+  matched_window_.reset();
   const int n = static_cast<int>(particles_.size());
   std::vector<Transition> transitions(particles_.size());
   std::vector<double> gain(particles_.size(), 0.0);
@@ -323,16 +361,36 @@ void SegSlam3d::update(std::size_t k) {
   if (stats_.updates % 10 == 0) prune();
 }
 
+MatchEvent3 SegSlam3d::offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const {
+  MatchEvent3 e;
+  e.sweep = last_update_, e.candidate = candidate, e.weight = m.weight;
+  e.icp_error = m.icp_error, e.all_points_error = m.all_points_error;
+  e.translation = m.translation, e.pose = m.pose, e.guess = guess;
+  e.structure = m.structure;
+  double best = std::numeric_limits<double>::infinity();
+  // The candidate's ancestors share its frame (a match child copies its parent's).
+  for (std::size_t id = candidate; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) {
+    for (const auto& [sweep, q] : segmap_.at(id).path) {
+      const double d = (q.position() - m.pose.position()).norm();
+      if (d < best) best = d, e.reference_sweep = sweep, e.reference = q;
+    }
+  }
+  return e;
+}
+
 void SegSlam3d::store_transitions(std::vector<Transition>& transitions) {
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     Transition& t = transitions[i];
+    for (const MatchEvent3& e : t.offers) {
+      stats_.match_offers.push_back(e);
+      if (e.chosen) stats_.match_events.push_back(e);
+    }
     if (!t.closed_one) continue;
     particles_[i].submap.predecessor = segmap_.add(std::move(t.closed));
     if (t.candidate == kNoSubmap) {
       ++stats_.segmentations;
     } else {
       ++stats_.matches;
-      stats_.match_events.push_back({last_update_, t.candidate, t.weight});
     }
   }
 }

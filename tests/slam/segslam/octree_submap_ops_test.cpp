@@ -9,6 +9,7 @@
 
 #include "lookahead/slam/octree/ray_insertion.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
+#include "lookahead/slam/segslam/submap_choice.hpp"
 #include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
 
 namespace lookahead::slam::segslam {
@@ -45,10 +46,7 @@ SweepWindow window_of(const RangeLog3& log, std::size_t first, std::size_t last)
       if (r.hit && (r.end - r.origin).norm() < 15.0) all.push_back(to_start * (*log.sweeps[i].truth * r.end));
     }
   }
-  SweepWindow w;
-  for (std::size_t i = 0; i < all.size(); i += std::max<std::size_t>(1, all.size() / 300)) w.scored.push_back(all[i]);
-  w.cloud = bin_points3(all, 0.2);
-  return w;
+  return make_sweep_window(all, 300, segslam3d_defaults().matching);
 }
 
 TEST(Pose4, ComposeInverseAndBetweenAreConsistent) {
@@ -110,6 +108,34 @@ TEST(OctreeSubmapOps, MatchingRecoversAKnownOffsetBetweenSubmapsOfOnePlace) {
   // A window of another place does not match this submap as well.
   const WindowMatch3 far = match_window(match_target_of(map_of(log, 0, 2), o), w, guess, o);
   EXPECT_TRUE(!far.ok || far.weight < m.weight);
+}
+
+// The cause of wrong re-entries on the garage loop: ICP started 4.2 m along the aisle (half a
+// column spacing) or 0.3 rad off converges to a wrong pose whose mean error over all points
+// is as low as the right pose's, since floor, ceiling and the aisle's walls and car sides fit
+// at any position along the aisle. The structure test rejects it: its columns and car ends
+// land where the candidate saw free space.
+TEST(OctreeSubmapOps, WrongReentriesFailTheStructureTestThatTheRightOnePasses) {
+  const RangeLog3& log = garage_log();
+  const OctreeMatchTarget target = match_target_of(map_of(log, 5, 12), segslam3d_defaults().matching);
+  const SweepWindow w = window_of(log, 8, 11);
+  const Pose4 truth = Pose4::level_of(*log.sweeps[8].truth);
+  MatchingOptions icp_only = segslam3d_defaults().matching;  // no coarse search: ICP's own basin
+  icp_only.search_radius = 0, icp_only.search_angle = 0;
+  const WindowMatch3 right = match_window(target, w, truth, icp_only);
+  ASSERT_TRUE(right.ok);
+  EXPECT_LT(right.structure.free_ratio, 0.02);
+  EXPECT_GT(right.weight, null_match_weight(icp_only));
+  for (const Pose4& off : {Pose4{4.2, 0, 0, 0}, Pose4{-4.2, 0, 0, 0}, Pose4{0, 0, 0, 0.3}, Pose4{4.2, 0, 0, 0.2}}) {
+    const WindowMatch3 wrong = match_window(target, w, truth.compose(off), icp_only);
+    const Pose4 e = truth.between(wrong.pose);
+    ASSERT_TRUE(e.position().norm() > 0.3 || std::abs(e.yaw) > 0.05) << "ICP found the truth from " << off.x;
+    // Over all points the wrong pose fits about as well as the right one (the old err_ICP) ...
+    EXPECT_LT(wrong.all_points_error, right.all_points_error + 0.04) << off.x << " " << off.yaw;
+    // ... over the structure it does not.
+    EXPECT_FALSE(wrong.ok) << off.x << " " << off.yaw << ": free " << wrong.structure.free_ratio;
+    EXPECT_GT(wrong.structure.free_ratio, 3 * right.structure.free_ratio + 0.05) << off.x << " " << off.yaw;
+  }
 }
 
 TEST(OctreeSubmapOps, PredictiveScoreDropsWhenTheWindowLeavesTheSubmap) {

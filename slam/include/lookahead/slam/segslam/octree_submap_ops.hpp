@@ -18,15 +18,24 @@
 #include "lookahead/slam/octree/evidence_octree.hpp"
 #include "lookahead/slam/segslam/point_icp3.hpp"
 #include "lookahead/slam/segslam/segslam_options.hpp"
+#include "lookahead/slam/segslam/structure_fit.hpp"
 
 namespace lookahead::slam::segslam {
 
 /// A look-ahead window's end points in the level frame of the robot at its first sweep
 /// (dead-reckoned; position and yaw of that sweep, no roll or pitch).
 struct SweepWindow {
-  Points3 scored;  ///< a thinned sample for eq. 17 and the coarse search
-  Points3 cloud;   ///< every end point, binned, for ICP
+  Points3 scored;             ///< a thinned sample for eq. 17 and the coarse search
+  Points3 cloud;              ///< every end point, binned, for ICP
+  OrientedPoints3 structure;  ///< the cloud's walls, columns and cars (structure_fit.hpp)
 };
+
+/// A window of end points (level frame of the robot at its first sweep): `scored` thinned to
+/// about `scored_points`, the cloud binned, and (`with_structure`) its structure points found.
+SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, const MatchingOptions& options,
+                              bool with_structure = true);
+/// Finds the window's structure points (normals by PCA: the costly part, left for matching).
+void find_structure(SweepWindow& window, const MatchingOptions& options);
 
 /// Eq. 17: the share of the window's scored points that `map` explains (an occupied voxel
 /// among the 27 around the point) with the robot at `pose` at the window's start; -1 when
@@ -36,38 +45,48 @@ double predictive_score(const EvidenceOctree& map, const Pose4& pose, const Swee
 /// Sec. 4.5.1 spatial proximity: does `map` hold observed voxels within `radius` of `p`?
 bool has_observed_near(const EvidenceOctree& map, const Eigen::Vector3d& p, double radius);
 
-/// Voxels within one voxel of an occupied one, as a dense bitmap over the map's occupied
-/// bounding box: O(1) tests for the coarse search.
+/// Voxels within one voxel of an occupied one, and voxels the map has observed at all, as a
+/// dense bitmap over the map's occupied bounding box: O(1) tests for the coarse search and
+/// the structure test.
 class NearOccupiedField {
  public:
   explicit NearOccupiedField(const EvidenceOctree& map);
   [[nodiscard]] bool near(const Eigen::Vector3d& p) const;
+  /// Near an occupied voxel, else known (free), else unknown.
+  [[nodiscard]] Seen seen(const Eigen::Vector3d& p) const;
 
  private:
   double resolution_ = 1.0;
   long x0_ = 0, y0_ = 0, z0_ = 0, nx_ = 0, ny_ = 0, nz_ = 0;
-  std::vector<std::uint8_t> bits_;
+  [[nodiscard]] std::uint8_t bits_at(const Eigen::Vector3d& p) const;
+  std::vector<std::uint8_t> bits_;  // 1: near occupied, 2: observed
 };
 
 /// What matching needs of a closed submap, built once per candidate.
 struct OctreeMatchTarget {
   NearOccupiedField field;
-  IcpTarget3 icp;  ///< occupied voxel centres, binned
+  IcpTarget3 icp;        ///< occupied voxel centres, binned
+  IcpTarget3 structure;  ///< those of them whose surface is structure, normals of their own
 };
 OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& options);
 
 struct WindowMatch3 {
   bool ok = false;
   Pose4 pose;                ///< the robot at the window's start, in the candidate's frame
-  double icp_error = 0.0;    ///< [m]
+  double icp_error = 0.0;    ///< eq. 18 err_ICP: the structure points' mean error [m]
+  double all_points_error = 0.0;  ///< ICP's mean error over all points, floor and ceiling too [m]
   double translation = 0.0;  ///< tau_m: distance from the guess [m]
   double weight = 0.0;       ///< eq. 18
+  StructureFit structure;    ///< the window's structure at `pose`
 };
 
 /// Sec. 4.5: a coarse search (x, y, yaw around `guess`, share of points near occupied voxels)
 /// seeds point-to-plane ICP of the binned window onto the candidate; weighted by eq. 18.
+/// Deviation: eq. 18's err_ICP is the mean error of the window's structure points (walls,
+/// columns, cars; structure_fit.hpp), not of all points, and a match needs enough of them
+/// fitted (`structure`): floor and ceiling fit a wrong re-entry as well as the right one.
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& guess,
-                          const MatchingOptions& options);
+                          const MatchingOptions& options, const StructureTestOptions& structure = {});
 
 /// Submaps of a map sample summed into one set of voxels (independence: overlapping evidence
 /// adds, clamped to the map's bounds); a match child pasted after its parent adds only what

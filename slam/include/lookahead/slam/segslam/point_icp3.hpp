@@ -34,6 +34,7 @@ class IcpTarget3 {
  public:
   IcpTarget3(Points3 points, double max_distance);
   [[nodiscard]] std::size_t size() const { return points_.size(); }
+  [[nodiscard]] double max_distance() const { return cell_; }
   /// The index of the target point nearest to `q` within max_distance, -1 when none.
   [[nodiscard]] long nearest(const Eigen::Vector3d& q) const;
   [[nodiscard]] const Eigen::Vector3d& point(long i) const { return points_[static_cast<std::size_t>(i)]; }

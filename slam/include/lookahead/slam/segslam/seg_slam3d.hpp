@@ -14,7 +14,9 @@
 // that class is written against laser scans and the 2D particle step and is being extended
 // (locking, merging) elsewhere; the graph code and the eq. 3/13-14/18 functions are shared.
 // Submap frames are level (x, y, z, yaw), and proximity winnowing also bounds the height
-// difference (the garage's decks share x, y).
+// difference (the garage's decks share x, y). A match is scored on the window's structure
+// points and vetoed when they land in the candidate's free space (structure_fit.hpp), and
+// eq. 18's p(tau^2) widens with the eq. 13-14 error since the candidate (tau_options).
 #pragma once
 
 #include <cstddef>
@@ -22,6 +24,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <tuple>
 #include <vector>
@@ -49,6 +52,8 @@ struct SegSlam3dExtras {
   double proximity_height = 1.0;
   /// End points of the look-ahead window scored by eq. 17 and the coarse search. >= 10.
   int window_points = 300;
+  /// What a match's walls, columns and cars must show (structure_fit.hpp).
+  StructureTestOptions structure;
 };
 
 /// The SegSLAM options for 3D sweeps: the 2D defaults with the bins, ICP and eq. 18 scales
@@ -71,17 +76,32 @@ struct SegParticle3 {
   int updates_since_match = 0;  ///< since the last matching attempt
 };
 
+/// One match a particle was offered (and, if `chosen`, took): enough to check it against
+/// ground truth afterwards, when the candidate submap may have been pruned.
 struct MatchEvent3 {
   std::size_t sweep = 0;
   std::size_t candidate = 0;
   double weight = 0.0;
+  double icp_error = 0.0;    ///< eq. 18 err_ICP (structure points) [m]
+  double all_points_error = 0.0;  ///< ICP's mean error over all points [m]
+  double translation = 0.0;  ///< eq. 18 tau [m]
+  Pose4 pose;                ///< the re-entry pose, in the candidate's frame
+  Pose4 guess;               ///< the particle's pose placed there by the map sample
+  StructureFit structure;    ///< the window's walls, columns and cars at `pose`
+  /// The candidate's path pose (its own or an ancestor's, same frame) nearest to `pose`:
+  /// reference.between(pose) is the match's claim about where the robot is now relative to
+  /// where it was at reference_sweep.
+  std::size_t reference_sweep = 0;
+  Pose4 reference;
+  bool chosen = false;
 };
 
 struct SegSlam3dStatistics {
   std::size_t sweeps = 0, updates = 0, resamplings = 0;
   std::size_t segmentations = 0, matches = 0, match_attempts = 0, pruned = 0;
   std::vector<double> neff;
-  std::vector<MatchEvent3> match_events;
+  std::vector<MatchEvent3> match_events;  ///< the matches taken
+  std::vector<MatchEvent3> match_offers;  ///< every match offered to a particle, taken or not
   double matching_seconds = 0;  ///< summed over threads: building targets, coarse search, ICP
 };
 
@@ -122,8 +142,12 @@ class SegSlam3d {
   Transition predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng);
   void advance(SegParticle3& p, const SweepModel& model, std::mt19937_64& rng) const;
   std::vector<WindowMatch3> match_candidates(const SegParticle3& p, const SweepWindow& w,
-                                             std::vector<std::size_t>& ids, std::mt19937_64& rng);
+                                             std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
+                                             std::mt19937_64& rng);
+  MatchEvent3 offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const;
   WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
+  [[nodiscard]] MatchingOptions tau_options(std::size_t candidate) const;
+  const SweepWindow& window_with_structure(const SweepWindow& w);
   void store_transitions(std::vector<Transition>& transitions);
   void prune();
   [[nodiscard]] int thread_count() const;
@@ -132,6 +156,7 @@ class SegSlam3d {
   std::vector<SegParticle3> particles_;
   OctreeSegMap segmap_;
   std::vector<RangeSweep> sweeps_;
+  std::vector<double> motion_error_sum_;  ///< eq. 13-14 error accumulated up to each updated sweep [m]
   std::size_t next_pending_ = 0;
   std::size_t last_update_ = 0;
   std::mt19937_64 rng_;
@@ -139,6 +164,8 @@ class SegSlam3d {
   std::mutex cache_mutex_;
   std::map<std::size_t, std::shared_ptr<const OctreeMatchTarget>> targets_;
   std::map<std::tuple<std::size_t, long, long, long, long>, WindowMatch3> match_cache_;
+  std::mutex window_mutex_;
+  std::optional<SweepWindow> matched_window_;  ///< this update's window with its structure
 };
 
 }  // namespace lookahead::slam::segslam
