@@ -54,8 +54,15 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
   return predicted_share(map, cluster, min_confidence);
 }
 
-double PredictedMap::unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
-                                      double radius, double min_confidence, double occupied) const {
+bool PredictedMap::borders_prediction(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                      const SkipRule& rule) const {
+  if (rule.region_radius <= 0 || !cluster.has_goal) return false;
+  const RegionArea a = region_area(map, cluster, rule.region_radius, rule.min_confidence, rule.occupied);
+  return a.predicted > 0 && a.unpredicted > rule.region_tolerance;
+}
+
+RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster, double radius,
+                                     double min_confidence, double occupied) const {
   const slam::CellIndex g = map.cell_at(cluster.goal_x, cluster.goal_y);
   const long r = std::lround(radius / map.resolution());
   const auto walkable = [&](slam::CellIndex c) {
@@ -75,14 +82,17 @@ double PredictedMap::unpredicted_area(const slam::OccupancyGrid& map, const Fron
   };
   for (const slam::CellIndex c : cluster.cells)
     for (const slam::CellIndex n : neighbours(c)) push(n);
-  std::size_t unpredicted = 0;
+  std::size_t unpredicted = 0, predicted = 0;
   while (!open.empty()) {
     const slam::CellIndex c = open.front();
     open.pop_front();
-    unpredicted += !(cells_.is_known(c) && confidence(c) >= min_confidence);
+    const bool known = cells_.is_known(c) && confidence(c) >= min_confidence;
+    unpredicted += !known;
+    predicted += known;
     for (const slam::CellIndex n : neighbours(c)) push(n);
   }
-  return static_cast<double>(unpredicted) * map.resolution() * map.resolution();
+  const double cell = map.resolution() * map.resolution();
+  return {static_cast<double>(predicted) * cell, static_cast<double>(unpredicted) * cell};
 }
 
 double PredictedMap::confidence(slam::CellIndex c) const {

@@ -119,6 +119,7 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
       const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
       out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known),
                      pm.covered_share(*in.map, f, in.skip)});
+      if (in.skip.neighbours_last) out.back().borders_prediction = pm.borders_prediction(*in.map, f, in.skip);
       continue;
     }
     out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range), 0.0});
