@@ -43,7 +43,7 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
     // Sec. II-B: the robot leaves out a region that is predicted. Its immediate far side
     // alone (predicted_share) says nothing of the unknown further on, which skipping
     // would leave neither explored nor predicted.
-    return unpredicted_area(map, cluster, rule.region_radius, min_confidence, rule.occupied) <= rule.region_tolerance
+    return region_area(map, cluster, rule).unpredicted <= rule.region_tolerance
                ? 1.0
                : 0.0;
   }
@@ -57,20 +57,35 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
 bool PredictedMap::borders_prediction(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                       const SkipRule& rule) const {
   if (rule.region_radius <= 0 || !cluster.has_goal) return false;
-  const RegionArea a = region_area(map, cluster, rule.region_radius, rule.min_confidence, rule.occupied);
+  const RegionArea a = region_area(map, cluster, rule);
   return a.predicted > 0 && a.unpredicted > rule.region_tolerance;
 }
 
-RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster, double radius,
-                                     double min_confidence, double occupied) const {
+RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                     const SkipRule& rule) const {
+  const double min_confidence = rule.min_confidence;
   const slam::CellIndex g = map.cell_at(cluster.goal_x, cluster.goal_y);
-  const long r = std::lround(radius / map.resolution());
+  const long r = std::lround(rule.region_radius / map.resolution());
+  // A predicted wall closes the region as an explored one would (the predictor's
+  // unexplored region stops at explored walls, predictor/src/unexplored_region.cpp).
+  const auto wall = [&](slam::CellIndex c) {
+    if (map.is_known(c)) return map.probability(c) >= rule.occupied;
+    return cells_.is_known(c) && confidence(c) >= min_confidence && cells_.probability(c) >= rule.occupied;
+  };
+  // A wall seen from afar or at a grazing angle has unknown cells between the beams' end
+  // points; the region leaks through them to the far side of the wall (beyond the outer
+  // wall: unknown for good, never predicted). A gap no wider than wall_gap is wall.
+  const int gap = static_cast<int>(std::lround(rule.wall_gap / 2 / map.resolution()));
+  const auto in_gap = [&](slam::CellIndex c) {
+    for (int dy = -gap; dy <= gap; ++dy)
+      for (int dx = -gap; dx <= gap; ++dx)
+        if (dx * dx + dy * dy <= gap * gap && (dx != 0 || dy != 0) && wall({c.x + dx, c.y + dy})) return true;
+    return false;
+  };
   const auto walkable = [&](slam::CellIndex c) {
     const long dx = c.x - g.x, dy = c.y - g.y;
-    if (dx * dx + dy * dy > r * r || map.is_known(c)) return false;
-    // A predicted wall closes the region as an explored one would (the predictor's
-    // unexplored region stops at explored walls, predictor/src/unexplored_region.cpp).
-    return !(cells_.is_known(c) && confidence(c) >= min_confidence && cells_.probability(c) >= occupied);
+    if (dx * dx + dy * dy > r * r || map.is_known(c) || wall(c)) return false;
+    return gap == 0 || !in_gap(c);
   };
   std::unordered_set<std::int64_t> seen;
   std::deque<slam::CellIndex> open;

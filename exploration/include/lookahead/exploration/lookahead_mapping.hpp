@@ -45,10 +45,12 @@ struct LookaheadOptions {
   /// With skip_region_radius: frontiers whose region is partly predicted are chosen only
   /// when no other is left (their rest may be predicted by then).
   bool neighbours_last = false;
+  /// With skip_region_radius: unknown gaps up to this wide in a wall close the region [m].
+  double skip_region_wall_gap = 0.0;
   /// The rule of the options above.
   [[nodiscard]] SkipRule skip_rule() const {
     return {skip_confidence, skip_predicted_targets, skip_region_radius, predictor.min_predicted_area,
-            predictor.features.occupied_threshold, neighbours_last};
+            predictor.features.occupied_threshold, neighbours_last, skip_region_wall_gap};
   }
   /// Frontiers predicted per target selection: the chosen target first, then the nearest
   /// other frontier goals (the paper's extension "predict several possible targets",

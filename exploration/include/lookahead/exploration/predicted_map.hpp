@@ -24,6 +24,9 @@ struct SkipRule {
   double occupied = 0.65;       ///< predicted walls: probability at least this
   /// With region_radius: frontiers whose region is partly predicted are chosen last.
   bool neighbours_last = false;
+  /// With region_radius: unknown gaps up to this wide in a wall (explored or predicted)
+  /// close the region as the wall would [m]; 0: only unbroken walls close it.
+  double wall_gap = 0.0;
 };
 
 /// A frontier's unexplored region (PredictedMap::region_area) [m^2].
@@ -59,11 +62,12 @@ class PredictedMap {
   /// `occupied`), counting those not predicted. What driving there would still reveal.
   [[nodiscard]] double unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                         double radius, double min_confidence, double occupied) const {
-    return region_area(map, cluster, radius, min_confidence, occupied).unpredicted;
+    return region_area(map, cluster, {min_confidence, false, radius, 0.0, occupied, false, 0.0}).unpredicted;
   }
-  /// The same region, split into its predicted and unpredicted parts.
-  [[nodiscard]] RegionArea region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster, double radius,
-                                       double min_confidence, double occupied) const;
+  /// The same region (within rule.region_radius, walls closing it with rule.wall_gap),
+  /// split into its predicted and unpredicted parts.
+  [[nodiscard]] RegionArea region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                       const SkipRule& rule) const;
   /// Under `rule` (region_radius > 0): part of the frontier's region is predicted, part is
   /// not. Such a frontier borders a predicted region; the rest of it may be predicted too
   /// once the map around it grows.
