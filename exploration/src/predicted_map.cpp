@@ -4,9 +4,30 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <unordered_set>
 
 namespace lookahead::exploration {
+
+namespace {
+
+// The smallest raw log-odds whose probability (OccupancyGrid::probability, the same formula)
+// is at least `p`: the flood tests walls by one integer compare instead of an exp per cell.
+int raw_at_least(double p) {
+  int lo = slam::GridTile::kUnknown + 1, hi = std::numeric_limits<std::int16_t>::max();
+  const auto passes = [&](int l) {
+    return 1.0 / (1.0 + std::exp(-static_cast<double>(l) / slam::GridTile::kLogOddsScale)) >= p;
+  };
+  if (!passes(hi)) return hi + 1;
+  while (lo < hi) {
+    const int mid = lo + (hi - lo) / 2;
+    if (passes(mid)) hi = mid;
+    else lo = mid + 1;
+  }
+  return lo;
+}
+
+}  // namespace
 
 void PredictedMap::add(const slam::HypothesisMap& h) {
   ++hypotheses_;
@@ -68,9 +89,12 @@ RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const Front
   const long r = std::lround(rule.region_radius / map.resolution());
   // A predicted wall closes the region as an explored one would (the predictor's
   // unexplored region stops at explored walls, predictor/src/unexplored_region.cpp).
+  const int occupied = raw_at_least(rule.occupied);
   const auto wall = [&](slam::CellIndex c) {
-    if (map.is_known(c)) return map.probability(c) >= rule.occupied;
-    return cells_.is_known(c) && confidence(c) >= min_confidence && cells_.probability(c) >= rule.occupied;
+    const int l = map.raw_log_odds(c);
+    if (l != slam::GridTile::kUnknown) return l >= occupied;
+    const int h = cells_.raw_log_odds(c);
+    return h != slam::GridTile::kUnknown && h >= occupied && confidence(c) >= min_confidence;
   };
   // A wall seen from afar or at a grazing angle has unknown cells between the beams' end
   // points; the region leaks through them to the far side of the wall (beyond the outer
