@@ -96,9 +96,11 @@ RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const Front
     const int h = cells_.raw_log_odds(c);
     return h != slam::GridTile::kUnknown && h >= occupied && confidence(c) >= min_confidence;
   };
-  // A wall seen from afar or at a grazing angle has unknown cells between the beams' end
-  // points; the region leaks through them to the far side of the wall (beyond the outer
-  // wall: unknown for good, never predicted). A gap no wider than wall_gap is wall.
+  // Beyond the paper: a wall seen from afar or at a grazing angle has unknown cells between
+  // the beams' end points (1 deg at 8 m: 0.14 m apart); the region leaks through them to
+  // the far side of the wall (beyond the outer wall: unknown for good, never predicted), and
+  // the frontier is never left out. A gap no wider than wall_gap (the maze study: the
+  // robot's diameter, no way for it) counts as wall. README, P-SLAM 1.
   const int gap = static_cast<int>(std::lround(rule.wall_gap / 2 / map.resolution()));
   const auto in_gap = [&](slam::CellIndex c) {
     for (int dy = -gap; dy <= gap; ++dy)
