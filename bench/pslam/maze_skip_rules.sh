@@ -1,17 +1,19 @@
 #!/bin/bash
 # SPDX-License-Identifier: MIT
 # P-SLAM reproduction 1, where the time goes: full-coverage missions on the maze (true pose,
-# seeds 1-5, two at a time) of nearest and of predictive under each skip rule in
+# seeds 1-5, JOBS at a time, default 1) of nearest and of predictive under each skip rule in
 # bench/pslam/maze_skip_rules/, with debug logs, then the table of summarize_maze_skips.py.
 # Run from the repository root after building:
 #   bash bench/pslam/maze_skip_rules.sh [RULE ...]     (default: every rule)
 # (LOOKAHEAD=/path/to/lookahead picks another binary; COVERAGE=0.95 ends at the 95 % goal instead
-# of full coverage, predicted free space counting for the predictive runs; OUT=folder.)
+# of full coverage, predicted free space counting for the predictive runs; OUT=folder;
+# JOBS=2 runs two missions at a time.)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin=${LOOKAHEAD:-./build/lookahead}
 coverage=${COVERAGE:-1.0}
 out=${OUT:-out/maze_skip_rules_$coverage}
+jobs=${JOBS:-1}
 rules=("$@")
 if [ ${#rules[@]} -eq 0 ]; then
   for f in bench/pslam/maze_skip_rules/*.yaml; do rules+=("$(basename "$f" .yaml)"); done
@@ -22,7 +24,7 @@ run() {  # tag, then the arguments of explore
   for s in 1 2 3 4 5; do
     SPDLOG_LEVEL=debug nice -n 10 "$bin" explore --world maze --pose truth --coverage-goal "$coverage" --seed "$s" \
       --out "$out/$tag/$s" "$@" > "$out/$tag/$s.log" 2>&1 &
-    if (( s % 2 == 0 )); then wait; fi
+    if (( s % jobs == 0 )); then wait; fi
   done
   wait
 }

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "lookahead/exploration/carmen_writer.hpp"
+#include "lookahead/exploration/prediction_targets.hpp"
 #include "lookahead/exploration/swept_disc.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
@@ -75,7 +77,10 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       frontiers_(options.frontiers),
       blacklist_(options.blacklist),
       replan_failures_(options.blacklist),
-      strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)) {
+      strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)),
+      // A spot is the same target within 1 m (the goal shifts as the map grows, as kSameGoalRadius);
+      // strikes never make an entry permanent: the map keeps growing around it.
+      predicted_targets_({kSameGoalRadius, options.lookahead.repredict_after, std::numeric_limits<int>::max()}) {
   if (!reachable_.start_valid) throw std::invalid_argument("mission: the start pose is in collision");
   if (options_.lookahead.enabled) {
     lookahead_ = std::make_unique<LookaheadMapping>(options_.lookahead, world_, options_.slam.grid,
@@ -105,6 +110,7 @@ MissionStatus Mission::step() {
   deliver_prediction();  // a finished hypothesis joins the look-ahead map and the filter
   refresh();  // costmap, frontiers and the current path, after a map update
   decide();   // a new target when the old one is reached, explored, blocked or stuck
+  predict_while_idle();  // opt-in: the idle predictor looks ahead of frontiers not chosen yet
   act();      // pure pursuit -> unicycle in the true world
   record();   // coverage, paths
   check_end();
@@ -153,21 +159,25 @@ void Mission::deliver_prediction() {
   if (rbpf_) rbpf_->add_hypothesis(std::move(h));  // ignored unless prediction is on
 }
 
-std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x, double goal_y) const {
-  std::vector<std::pair<double, double>> targets{{goal_x, goal_y}};
-  const std::vector<FrontierCluster> clusters = frontiers_.clusters(map());
-  std::vector<std::pair<double, const FrontierCluster*>> others;
-  const slam::Pose2 p = estimate();
-  for (const FrontierCluster& f : clusters) {
-    if (!f.has_goal || std::hypot(f.goal_x - goal_x, f.goal_y - goal_y) < 1.0) continue;
-    others.push_back({std::hypot(f.goal_x - p.x, f.goal_y - p.y), &f});
-  }
-  std::sort(others.begin(), others.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& [d, f] : others) {
-    if (static_cast<int>(targets.size()) >= options_.lookahead.targets_per_selection) break;
-    targets.push_back({f->goal_x, f->goal_y});
-  }
+std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x, double goal_y) {
+  const TargetList targets = selection_targets(frontiers_.clusters(map()), goal_x, goal_y, estimate(),
+                                               options_.lookahead.targets_per_selection);
+  for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
   return targets;
+}
+
+void Mission::predict_while_idle() {
+  if (!lookahead_ || !options_.lookahead.predict_while_idle || !goal_ || !lookahead_->idle()) return;
+  if (time_ < next_idle_prediction_) return;
+  next_idle_prediction_ = time_ + options_.lookahead.latency;  // clusters() is not free
+  predicted_targets_.expire(time_);
+  const slam::OccupancyGrid& m = map();
+  const TargetList targets = unpredicted_frontier_targets(
+      frontiers_.clusters(m), m, lookahead_->predicted(), options_.lookahead.skip_rule(), options_.lookahead.skip_share,
+      predicted_targets_, time_, estimate(), options_.lookahead.targets_per_selection);
+  if (targets.empty()) return;
+  for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
+  lookahead_->request(m, targets, time_);
 }
 
 void Mission::refresh() {

@@ -65,7 +65,11 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
   v("skip_share", o.skip_share, "... skip a frontier when this share of its far side is predicted");
   v("skip_predicted_targets", o.skip_predicted_targets, "... or when its goal got a hypothesis itself");
   v("skip_region_radius", o.skip_region_radius, "> 0: ... instead when its region within this is predicted [m]");
+  v("neighbours_last", o.neighbours_last, "... and choose frontiers whose region is partly predicted last");
+  v("skip_region_wall_gap", o.skip_region_wall_gap, "... a wall's unknown gaps up to this wide close the region [m]");
   v("targets_per_selection", o.targets_per_selection, "frontiers predicted per selection: the target, then the nearest");
+  v("predict_while_idle", o.predict_while_idle, "an idle predictor predicts the nearest frontiers not covered yet");
+  v("repredict_after", o.repredict_after, "... a frontier again after this long [s, simulated]");
   v("pictures", o.pictures,
     "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");
   v("surroundings_diameter", o.predictor.surroundings_diameter, "d: surroundings S_f and prediction range [m]");

@@ -60,6 +60,10 @@ void MissionOptions::validate() const {
   make_strategy(strategy);  // throws on an unknown name
   require(lookahead.latency >= 0, "lookahead.latency >= 0");
   require(lookahead.targets_per_selection >= 1, "lookahead.targets_per_selection >= 1");
+  require(!lookahead.neighbours_last || lookahead.skip_region_radius > 0,
+          "lookahead.neighbours_last needs lookahead.skip_region_radius > 0");
+  require(lookahead.skip_region_wall_gap >= 0, "lookahead.skip_region_wall_gap >= 0");
+  require(lookahead.repredict_after > 0, "lookahead.repredict_after > 0");
   require(lookahead.skip_confidence >= 0 && lookahead.skip_confidence <= 1, "lookahead.skip_confidence in [0, 1]");
   require(lookahead.skip_region_radius >= 0, "lookahead.skip_region_radius >= 0");
   require(lookahead.skip_share > 0 && lookahead.skip_share <= 1, "lookahead.skip_share in (0, 1]");

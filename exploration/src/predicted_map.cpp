@@ -4,9 +4,30 @@
 #include <array>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <unordered_set>
 
 namespace lookahead::exploration {
+
+namespace {
+
+// The smallest raw log-odds whose probability (OccupancyGrid::probability, the same formula)
+// is at least `p`: the flood tests walls by one integer compare instead of an exp per cell.
+int raw_at_least(double p) {
+  int lo = slam::GridTile::kUnknown + 1, hi = std::numeric_limits<std::int16_t>::max();
+  const auto passes = [&](int l) {
+    return 1.0 / (1.0 + std::exp(-static_cast<double>(l) / slam::GridTile::kLogOddsScale)) >= p;
+  };
+  if (!passes(hi)) return hi + 1;
+  while (lo < hi) {
+    const int mid = lo + (hi - lo) / 2;
+    if (passes(mid)) hi = mid;
+    else lo = mid + 1;
+  }
+  return lo;
+}
+
+}  // namespace
 
 void PredictedMap::add(const slam::HypothesisMap& h) {
   ++hypotheses_;
@@ -43,7 +64,7 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
     // Sec. II-B: the robot leaves out a region that is predicted. Its immediate far side
     // alone (predicted_share) says nothing of the unknown further on, which skipping
     // would leave neither explored nor predicted.
-    return unpredicted_area(map, cluster, rule.region_radius, min_confidence, rule.occupied) <= rule.region_tolerance
+    return region_area(map, cluster, rule).unpredicted <= rule.region_tolerance
                ? 1.0
                : 0.0;
   }
@@ -54,16 +75,43 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
   return predicted_share(map, cluster, min_confidence);
 }
 
-double PredictedMap::unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
-                                      double radius, double min_confidence, double occupied) const {
+bool PredictedMap::borders_prediction(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                      const SkipRule& rule) const {
+  if (rule.region_radius <= 0 || !cluster.has_goal) return false;
+  const RegionArea a = region_area(map, cluster, rule);
+  return a.predicted > 0 && a.unpredicted > rule.region_tolerance;
+}
+
+RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                     const SkipRule& rule) const {
+  const double min_confidence = rule.min_confidence;
   const slam::CellIndex g = map.cell_at(cluster.goal_x, cluster.goal_y);
-  const long r = std::lround(radius / map.resolution());
+  const long r = std::lround(rule.region_radius / map.resolution());
+  // A predicted wall closes the region as an explored one would (the predictor's
+  // unexplored region stops at explored walls, predictor/src/unexplored_region.cpp).
+  const int occupied = raw_at_least(rule.occupied);
+  const auto wall = [&](slam::CellIndex c) {
+    const int l = map.raw_log_odds(c);
+    if (l != slam::GridTile::kUnknown) return l >= occupied;
+    const int h = cells_.raw_log_odds(c);
+    return h != slam::GridTile::kUnknown && h >= occupied && confidence(c) >= min_confidence;
+  };
+  // Beyond the paper: a wall seen from afar or at a grazing angle has unknown cells between
+  // the beams' end points (1 deg at 8 m: 0.14 m apart); the region leaks through them to
+  // the far side of the wall (beyond the outer wall: unknown for good, never predicted), and
+  // the frontier is never left out. A gap no wider than wall_gap (the maze study: the
+  // robot's diameter, no way for it) counts as wall. README, P-SLAM 1.
+  const int gap = static_cast<int>(std::lround(rule.wall_gap / 2 / map.resolution()));
+  const auto in_gap = [&](slam::CellIndex c) {
+    for (int dy = -gap; dy <= gap; ++dy)
+      for (int dx = -gap; dx <= gap; ++dx)
+        if (dx * dx + dy * dy <= gap * gap && (dx != 0 || dy != 0) && wall({c.x + dx, c.y + dy})) return true;
+    return false;
+  };
   const auto walkable = [&](slam::CellIndex c) {
     const long dx = c.x - g.x, dy = c.y - g.y;
-    if (dx * dx + dy * dy > r * r || map.is_known(c)) return false;
-    // A predicted wall closes the region as an explored one would (the predictor's
-    // unexplored region stops at explored walls, predictor/src/unexplored_region.cpp).
-    return !(cells_.is_known(c) && confidence(c) >= min_confidence && cells_.probability(c) >= occupied);
+    if (dx * dx + dy * dy > r * r || map.is_known(c) || wall(c)) return false;
+    return gap == 0 || !in_gap(c);
   };
   std::unordered_set<std::int64_t> seen;
   std::deque<slam::CellIndex> open;
@@ -75,14 +123,17 @@ double PredictedMap::unpredicted_area(const slam::OccupancyGrid& map, const Fron
   };
   for (const slam::CellIndex c : cluster.cells)
     for (const slam::CellIndex n : neighbours(c)) push(n);
-  std::size_t unpredicted = 0;
+  std::size_t unpredicted = 0, predicted = 0;
   while (!open.empty()) {
     const slam::CellIndex c = open.front();
     open.pop_front();
-    unpredicted += !(cells_.is_known(c) && confidence(c) >= min_confidence);
+    const bool known = cells_.is_known(c) && confidence(c) >= min_confidence;
+    unpredicted += !known;
+    predicted += known;
     for (const slam::CellIndex n : neighbours(c)) push(n);
   }
-  return static_cast<double>(unpredicted) * map.resolution() * map.resolution();
+  const double cell = map.resolution() * map.resolution();
+  return {static_cast<double>(predicted) * cell, static_cast<double>(unpredicted) * cell};
 }
 
 double PredictedMap::confidence(slam::CellIndex c) const {

@@ -119,6 +119,7 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
       const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
       out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known),
                      pm.covered_share(*in.map, f, in.skip)});
+      if (in.skip.neighbours_last) out.back().borders_prediction = pm.borders_prediction(*in.map, f, in.skip);
       continue;
     }
     out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range), 0.0});
@@ -128,7 +129,7 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
 
 // Debug trace of look-ahead mapping: how much of the chosen frontier's far side was
 // already predicted, and how many frontiers the strategy skipped or nearly skipped.
-void log_predicted_shares(const std::vector<Candidate>& candidates, std::size_t pick) {
+void log_predicted_shares(const SelectionInputs& in, const std::vector<Candidate>& candidates, std::size_t pick) {
   int skipped = 0, partly = 0;
   for (const Candidate& c : candidates) {
     skipped += c.predicted_share >= 1.0;
@@ -139,6 +140,9 @@ void log_predicted_shares(const std::vector<Candidate>& candidates, std::size_t 
                 "{} of {} frontiers fully predicted, {} partly",
                 c.cluster->cells.size(), c.cluster->goal_x, c.cluster->goal_y, 100 * c.predicted_share,
                 c.information_gain, skipped, candidates.size(), partly);
+  if (in.skip.region_radius <= 0 || !spdlog::should_log(spdlog::level::debug)) return;
+  const RegionArea a = in.predicted->region_area(*in.map, *c.cluster, in.skip);
+  spdlog::debug("look-ahead: its region: {:.1f} m^2 predicted, {:.1f} m^2 not", a.predicted, a.unpredicted);
 }
 
 // Plans from `start` to the goal with OMPL inside the ellipse the Dijkstra price bounds,
@@ -211,7 +215,7 @@ Selection select_target(const SelectionInputs& in) {
       break;
     }
     const FrontierCluster& target = *candidates[*pick].cluster;
-    if (in.predicted && in.strategy->uses_prediction()) log_predicted_shares(candidates, *pick);
+    if (in.predicted && in.strategy->uses_prediction()) log_predicted_shares(in, candidates, *pick);
     const planner::PlanResult r = plan_to(in, cost, *start, {target.goal_x, target.goal_y}, s);
     if (r.solved()) return s;
     ++s.plan_failures;

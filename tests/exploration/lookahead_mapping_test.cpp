@@ -97,7 +97,7 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   }
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
-  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65};  // region: 0.5 m round the goal
+  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0};  // region: 0.5 m round the goal
   PredictedMap none;
   EXPECT_NEAR(none.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.39, 0.03);  // the half disc
   EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
@@ -108,11 +108,42 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   PredictedMap free_region;
   free_region.add(hypothesis(0.05, 1.0, 0.7, -1000));
   EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, rule), 1.0);
-  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, {0.8, false, 0.5, 0.1, 0.65}), 0.0);  // Psi too low
+  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, {0.8, false, 0.5, 0.1, 0.65, false, 0.0}), 0.0);  // Psi too low
   PredictedMap wall;
   wall.add(hypothesis(0.05, 0.1, 0.7, 2000));  // a wall right beyond the frontier closes it
   EXPECT_LT(wall.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.01);
   EXPECT_DOUBLE_EQ(wall.covered_share(map, cluster, rule), 1.0);
+  // Only a region partly predicted borders a prediction: not one with nothing predicted, nor
+  // one predicted whole (the region rule skips that), nor without the region rule.
+  EXPECT_FALSE(none.borders_prediction(map, cluster, rule));
+  EXPECT_TRUE(part.borders_prediction(map, cluster, rule));
+  EXPECT_FALSE(free_region.borders_prediction(map, cluster, rule));
+  EXPECT_FALSE(part.borders_prediction(map, cluster, {0.6, false, 0.0, 0.1, 0.65, false, 0.0}));
+  const RegionArea a = part.region_area(map, cluster, rule);
+  EXPECT_NEAR(a.predicted + a.unpredicted, 0.39, 0.03);  // the half disc, split
+  EXPECT_GT(a.predicted, 0.05);
+}
+
+// A wall 0.25 m beyond the frontier with a three-cell (0.15 m) gap, as a wall seen from afar
+// has between beams: the region leaks through it unless such gaps count as wall.
+TEST(PredictedMap, AGapInAWallClosesTheRegionWithWallGap) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  for (int y = -30; y <= 50; ++y) {  // an explored strip, its middle 1 m the frontier
+    map.add_log_odds({0, y}, -1000);
+    map.add_log_odds({-1, y}, -1000);
+    if (y >= 0 && y < 20) cluster.cells.push_back({0, y});
+  }
+  cluster.has_goal = true;
+  cluster.goal_y = 0.5;
+  for (int y = -30; y <= 50; ++y)
+    if (y < 9 || y > 11) map.add_log_odds({5, y}, 2000);
+  const PredictedMap none;
+  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0};
+  EXPECT_GT(none.region_area(map, cluster, rule).unpredicted, 1.0);  // the far side of the wall too
+  rule.wall_gap = 0.3;
+  EXPECT_LT(none.region_area(map, cluster, rule).unpredicted, 0.5);  // only the strip before it
+  EXPECT_GT(none.region_area(map, cluster, rule).unpredicted, 0.05);
 }
 
 TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
@@ -127,6 +158,18 @@ TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
   EXPECT_TRUE(s.uses_prediction());
   EXPECT_EQ(s.name(), "predictive");
   EXPECT_EQ(make_strategy("predictive-utility")->name(), "predictive-utility");
+}
+
+TEST(PredictionAwareStrategy, FrontiersBorderingAPredictedRegionComeLast) {
+  const PredictionAwareStrategy s(make_strategy("nearest"), 1.0);
+  FrontierCluster a, b, c;
+  std::vector<Candidate> cands{{&a, 1.0, 5.0, 0.0}, {&b, 4.0, 5.0, 0.0}, {&c, 2.0, 5.0, 1.0}};
+  cands[0].borders_prediction = true;
+  EXPECT_EQ(s.choose(cands), std::optional<std::size_t>(1));  // the far one, clear of predictions
+  cands[1].borders_prediction = true;
+  EXPECT_EQ(s.choose(cands), std::optional<std::size_t>(0));  // all left border one: nearest
+  cands[0].predicted_share = cands[1].predicted_share = 1.0;
+  EXPECT_FALSE(s.choose(cands).has_value());
 }
 
 TEST(HypothesisCheck, CountsCellsTheWorldConfirms) {

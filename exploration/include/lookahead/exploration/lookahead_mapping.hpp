@@ -42,15 +42,27 @@ struct LookaheadOptions {
   /// unknown cells reachable from its far side, closed by explored and predicted walls) has
   /// at most `min_predicted_area` that no hypothesis with Psi >= skip_confidence predicts [m].
   double skip_region_radius = 0.0;
+  /// With skip_region_radius: frontiers whose region is partly predicted are chosen only
+  /// when no other is left (their rest may be predicted by then).
+  bool neighbours_last = false;
+  /// With skip_region_radius: unknown gaps up to this wide in a wall close the region [m].
+  double skip_region_wall_gap = 0.0;
   /// The rule of the options above.
   [[nodiscard]] SkipRule skip_rule() const {
     return {skip_confidence, skip_predicted_targets, skip_region_radius, predictor.min_predicted_area,
-            predictor.features.occupied_threshold};
+            predictor.features.occupied_threshold, neighbours_last, skip_region_wall_gap};
   }
   /// Frontiers predicted per target selection: the chosen target first, then the nearest
   /// other frontier goals (the paper's extension "predict several possible targets",
   /// sec. II-A). They queue on the worker, one delivered per latency period.
   int targets_per_selection = 4;
+  /// Opt-in: while the predictor has nothing queued, predict the nearest frontier goals that
+  /// the look-ahead map does not cover yet (targets_per_selection at a time), a goal again
+  /// only `repredict_after` seconds after its last try (the map around it grows meanwhile).
+  /// The paper predicts "the next possible exploration goal" (sec. II-A); every frontier is
+  /// one, and a selection that knows which are predicted can leave them out.
+  bool predict_while_idle = false;
+  double repredict_after = 10.0;  ///< [s, simulated]
   /// Keep the map and the prediction of every hypothesis and write one picture each into
   /// the run folder (predictions/NNN.png, with the true walls of the target region): for
   /// finding out why a hypothesis scored low against the world. Costs memory; off by default.
@@ -88,6 +100,8 @@ class LookaheadMapping {
   /// The hypothesis of the pending request once its latency has passed (null otherwise, or
   /// when no hypothesis cleared the threshold).
   std::shared_ptr<const slam::HypothesisMap> deliver(double now);
+  /// Nothing running on the worker and nothing queued.
+  [[nodiscard]] bool idle() const { return !pending_ && queued_.empty(); }
 
   [[nodiscard]] const PredictedMap& predicted() const { return predicted_; }
   [[nodiscard]] const std::vector<PredictionRecord>& records() const { return records_; }

@@ -89,7 +89,8 @@ class Mission {
  private:
   void sense();
   void deliver_prediction();
-  std::vector<std::pair<double, double>> prediction_targets(double goal_x, double goal_y) const;
+  std::vector<std::pair<double, double>> prediction_targets(double goal_x, double goal_y);
+  void predict_while_idle();  ///< LookaheadOptions::predict_while_idle
   void refresh();
   void decide();
   bool need_new_path();
@@ -125,6 +126,8 @@ class Mission {
   GoalBlacklist replan_failures_;  ///< goals given up once because no replan reached them
   std::unique_ptr<TargetStrategy> strategy_;
   std::unique_ptr<LookaheadMapping> lookahead_;
+  GoalBlacklist predicted_targets_;  ///< frontier goals predicted lately (predict_while_idle)
+  double next_idle_prediction_ = 0.0;
   planner::Costmap costmap_;
   std::unique_ptr<planner::PathFollower> follower_;
   std::optional<planner::Point2> goal_;

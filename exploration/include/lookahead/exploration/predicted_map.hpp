@@ -22,6 +22,17 @@ struct SkipRule {
   double region_radius = 0.0;   ///< > 0: covered when its region is predicted [m]
   double region_tolerance = 1.0;  ///< ... up to this much unpredicted area [m^2]
   double occupied = 0.65;       ///< predicted walls: probability at least this
+  /// With region_radius: frontiers whose region is partly predicted are chosen last.
+  bool neighbours_last = false;
+  /// With region_radius: unknown gaps up to this wide in a wall (explored or predicted)
+  /// close the region as the wall would [m]; 0: only unbroken walls close it.
+  double wall_gap = 0.0;
+};
+
+/// A frontier's unexplored region (PredictedMap::region_area) [m^2].
+struct RegionArea {
+  double predicted = 0.0;    ///< by a hypothesis with the minimum Psi
+  double unpredicted = 0.0;  ///< what driving there would still reveal
 };
 
 class PredictedMap {
@@ -50,7 +61,18 @@ class PredictedMap {
   /// far side through unknown cells, not through predicted walls (probability >=
   /// `occupied`), counting those not predicted. What driving there would still reveal.
   [[nodiscard]] double unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
-                                        double radius, double min_confidence, double occupied) const;
+                                        double radius, double min_confidence, double occupied) const {
+    return region_area(map, cluster, {min_confidence, false, radius, 0.0, occupied, false, 0.0}).unpredicted;
+  }
+  /// The same region (within rule.region_radius, walls closing it with rule.wall_gap),
+  /// split into its predicted and unpredicted parts.
+  [[nodiscard]] RegionArea region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                       const SkipRule& rule) const;
+  /// Under `rule` (region_radius > 0): part of the frontier's region is predicted, part is
+  /// not. Such a frontier borders a predicted region; the rest of it may be predicted too
+  /// once the map around it grows.
+  [[nodiscard]] bool borders_prediction(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                        const SkipRule& rule) const;
   /// The share of the cluster's far side that look-ahead mapping covers: 1 when its goal is
   /// a predicted target (`by_target`); with `region_radius`, 1 when the region's unpredicted
   /// area is within the tolerance and 0 otherwise; else predicted_share().

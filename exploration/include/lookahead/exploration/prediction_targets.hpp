@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// Which frontiers the look-ahead mapping predicts (Chang et al. 2007, sec. II-A, step 1: the
+// target cell f is "the next possible exploration goal"; the prediction "can be easily
+// extended to predict several possible targets"). At a selection: the chosen goal, then the
+// nearest other frontier goals. While the predictor is idle (opt-in): the nearest frontier
+// goals that no hypothesis covers yet and that were not tried lately, so that the next
+// selection already knows which frontiers are predicted.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "lookahead/exploration/frontier_detector.hpp"
+#include "lookahead/exploration/goal_blacklist.hpp"
+#include "lookahead/exploration/predicted_map.hpp"
+#include "lookahead/slam/geometry/pose2.hpp"
+
+namespace lookahead::exploration {
+
+using TargetList = std::vector<std::pair<double, double>>;
+
+/// The chosen goal first, then the other frontier goals (more than 1 m from it) nearest to
+/// `robot` first, `count` in all.
+TargetList selection_targets(const std::vector<FrontierCluster>& clusters, double goal_x, double goal_y,
+                             const slam::Pose2& robot, int count);
+
+/// Frontier goals worth a prediction while the predictor has nothing to do: not covered by
+/// the look-ahead map under `rule` (covered_share below `skip_share`) and not predicted
+/// within the memory's radius and lifetime (`tried`); nearest to `robot` first, `count` at
+/// most. The map around a frontier grows as the robot drives, so a frontier tried once is
+/// tried again when its memory entry expires.
+TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
+                                        const PredictedMap& predicted, const SkipRule& rule, double skip_share,
+                                        const GoalBlacklist& tried, double now, const slam::Pose2& robot, int count);
+
+}  // namespace lookahead::exploration
