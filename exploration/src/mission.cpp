@@ -9,7 +9,6 @@
 
 #include "lookahead/exploration/carmen_writer.hpp"
 #include "lookahead/exploration/prediction_targets.hpp"
-#include "lookahead/exploration/swept_disc.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
 
@@ -37,23 +36,9 @@ constexpr double kRetireRadius = 1.0;
 // robot is driving to (the map grows on the way, so the goal shifts a little).
 constexpr double kSameGoalRadius = 1.0;
 
-// Steps the reactive stop may hold the robot before its path is given up and replanned
-// from where it stands (2 s at 10 Hz): the stop found something the path does not avoid.
-constexpr int kStopsBeforeReplan = 20;
-
-// The reactive stop's corridor is this much wider than the body on each side [m].
-constexpr double kStopSideClearance = 0.02;
-
 // Selections in a row with no reachable frontier (each followed by a backtrack or a look
-// around) before the last resort, and last-resort moves (squeeze, backtrack, alternating)
-// before the mission ends trapped. A squeeze that reaches its goal starts the count again.
+// around) before the last resort (mission_escapes.cpp).
 constexpr int kOrdinaryTries = 3;
-constexpr int kLastResortTries = 6;
-
-// Tracking of a backtrack along the trail: look-ahead [m] and heading error that stops
-// forward motion [rad].
-constexpr double kBacktrackLookahead = 0.15;
-constexpr double kBacktrackRotateAngle = 0.3;
 
 MissionOptions checked(MissionOptions o) {
   o.validate();
@@ -377,60 +362,6 @@ void Mission::select_new_target() {
   }
 }
 
-bool Mission::backtrack() {
-  if (!options_.backtrack) return false;
-  const Selection s = select_escape(selection_inputs(), crumbs_);
-  if (s.outcome != SelectionOutcome::kPlanned) return false;
-  ++stats_.backtracks;
-  spdlog::debug("t {:.1f}: no frontier reachable: backtrack {} crumbs to ({:.2f}, {:.2f})", time_, s.path.size() - 1,
-                s.goal_x, s.goal_y);
-  backtracking_ = true;
-  follow(s, close_tracking());
-  return true;
-}
-
-bool Mission::last_resort() {
-  // The ordinary tries found no frontier the margin lets the robot reach. Before calling it
-  // trapped: a door wider than the body but narrower than body + margin is no wall. A
-  // squeeze the stuck clock gives up (a jamb it cannot pass) is followed by a backtrack,
-  // so the next squeeze starts elsewhere and aims at another frontier (the failed goal is
-  // blacklisted). Only here, so a mission that never runs out of tries is unchanged.
-  if (!options_.squeeze || last_resorts_ >= kLastResortTries) return false;
-  ++last_resorts_;
-  const bool squeeze_first = last_resorts_ % 2 == 1;
-  return squeeze_first ? (squeeze() || backtrack()) : (backtrack() || squeeze());
-}
-
-bool Mission::squeeze() {
-  if (!options_.squeeze) return false;
-  planner::CostmapOptions body = options_.planner.costmap;
-  body.robot_radius = options_.robot.radius;
-  const planner::Costmap tight(map(), body);
-  SelectionInputs in = selection_inputs();
-  in.costmap = &tight;
-  const Selection s = select_target(in);
-  count(s);
-  if (s.outcome != SelectionOutcome::kPlanned) return false;
-  ++stats_.squeezes;
-  spdlog::debug("t {:.1f}: no frontier reachable: squeeze to ({:.2f}, {:.2f}) without the margin", time_, s.goal_x,
-                s.goal_y);
-  // The margin would throw this path away at the next refresh; the reactive stop guards it.
-  squeezing_ = true;
-  tight_ = true;
-  follow(s, close_tracking());
-  return true;
-}
-
-planner::FollowerOptions Mission::close_tracking() const {
-  // The path fits where it is drawn, not beside it: a door the margin closed may leave the
-  // body a few cm, so it is tracked closely (a short look-ahead cuts less) and the robot
-  // turns on the spot sooner rather than sweep a jamb into its stop.
-  planner::FollowerOptions close = options_.follower;
-  close.lookahead = std::min(close.lookahead, kBacktrackLookahead);
-  close.rotate_in_place_angle = std::min(close.rotate_in_place_angle, kBacktrackRotateAngle);
-  return close;
-}
-
 void Mission::follow(const Selection& s, const planner::FollowerOptions& tracking) {
   goal_ = planner::Point2{s.goal_x, s.goal_y};
   follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
@@ -470,41 +401,6 @@ void Mission::act() {
     ++stats_.collisions;
     status_ = MissionStatus::kCollision;
   }
-}
-
-void Mission::hold_or_replan() {
-  // A stop that outlasts a costmap refresh is not a wall the map had not caught up with:
-  // the robot is off its path, facing a door jamb it cut towards. Waiting for the stuck
-  // clock (30 s) wastes the time; a new plan starts from the nearest free cell, away from it.
-  // A backtrack or a squeeze has no other way to go: it waits, and the stuck clock gives it up.
-  if (++stop_streak_ < kStopsBeforeReplan || backtracking_ || squeezing_) return;
-  stop_streak_ = 0;
-  follower_.reset();
-  path_blocked_ = true;
-  ++stats_.replans;
-}
-
-bool Mission::path_ahead_blocked(const planner::VelocityCommand& cmd) const {
-  // Half through a door the margin closes (after a squeeze) the jambs are a few cm from the
-  // body: what counts is whether the disc, driven along the commanded arc, runs into a
-  // return (swept_disc.hpp). A straight corridor 2 cm wider than the body would catch the
-  // jambs' noisy returns and hold the robot in the door, and would miss a jamb the arc turns
-  // into (kth_50010535_PLAN1, t = 1258 s, before this).
-  const double travel = cmd.v * options_.laser.period() + options_.stop_distance;
-  if (tight_) return disc_sweeps_into(last_scan_, options_.robot.radius, {cmd.v, cmd.omega, travel});
-  // Elsewhere: the corridor the body sweeps in the next step plus the stop distance, in the
-  // laser (= robot) frame, 2 cm wider than the body: end points inside it are walls about to
-  // be hit.
-  const double half_width = options_.robot.radius + kStopSideClearance;
-  const double reach = options_.robot.radius + travel;
-  for (std::size_t i = 0; i < last_scan_.ranges.size(); ++i) {
-    if (!last_scan_.is_return(i)) continue;
-    const double a = last_scan_.bearing(i) + last_scan_.laser_offset.theta;
-    const double x = last_scan_.laser_offset.x + last_scan_.ranges[i] * std::cos(a);
-    const double y = last_scan_.laser_offset.y + last_scan_.ranges[i] * std::sin(a);
-    if (x > 0 && x < reach && std::abs(y) < half_width) return true;
-  }
-  return false;
 }
 
 void Mission::record() {
