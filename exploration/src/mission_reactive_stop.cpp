@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The reactive stop: no forward motion into laser returns the map has not caught up with,
 // and a new path when the stop holds the robot for long.
-#include <cmath>
-
 #include "lookahead/exploration/mission.hpp"
 #include "lookahead/exploration/swept_disc.hpp"
 
@@ -41,16 +39,8 @@ bool Mission::path_ahead_blocked(const planner::VelocityCommand& cmd) const {
   // Elsewhere: the corridor the body sweeps in the next step plus the stop distance, in the
   // laser (= robot) frame, 2 cm wider than the body: end points inside it are walls about to
   // be hit.
-  const double half_width = options_.robot.radius + kStopSideClearance;
-  const double reach = options_.robot.radius + travel;
-  for (std::size_t i = 0; i < last_scan_.ranges.size(); ++i) {
-    if (!last_scan_.is_return(i)) continue;
-    const double a = last_scan_.bearing(i) + last_scan_.laser_offset.theta;
-    const double x = last_scan_.laser_offset.x + last_scan_.ranges[i] * std::cos(a);
-    const double y = last_scan_.laser_offset.y + last_scan_.ranges[i] * std::sin(a);
-    if (x > 0 && x < reach && std::abs(y) < half_width) return true;
-  }
-  return false;
+  return corridor_holds_return(last_scan_, options_.robot.radius + kStopSideClearance,
+                               options_.robot.radius + travel);
 }
 
 }  // namespace lookahead::exploration

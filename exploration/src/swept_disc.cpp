@@ -23,6 +23,12 @@ Point centre_after(double s, double k) {
   return {std::sin(k * s) / k, (1.0 - std::cos(k * s)) / k};
 }
 
+// End point of beam i in the robot frame (the laser at its offset).
+Point end_point(const slam::LaserScan& scan, std::size_t i) {
+  const double a = scan.bearing(i) + scan.laser_offset.theta;
+  return {scan.laser_offset.x + scan.ranges[i] * std::cos(a), scan.laser_offset.y + scan.ranges[i] * std::sin(a)};
+}
+
 }  // namespace
 
 bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMotion& motion) {
@@ -34,15 +40,22 @@ bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMoti
   const double near2 = (motion.distance + radius) * (motion.distance + radius);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
     if (!scan.is_return(i)) continue;
-    const double a = scan.bearing(i) + scan.laser_offset.theta;
-    const double px = scan.laser_offset.x + scan.ranges[i] * std::cos(a);
-    const double py = scan.laser_offset.y + scan.ranges[i] * std::sin(a);
-    const double now2 = px * px + py * py;
+    const Point p = end_point(scan, i);
+    const double now2 = p.x * p.x + p.y * p.y;
     if (now2 > near2) continue;  // out of reach of this motion
     for (const Point& c : centres) {
-      const double d2 = (px - c.x) * (px - c.x) + (py - c.y) * (py - c.y);
+      const double d2 = (p.x - c.x) * (p.x - c.x) + (p.y - c.y) * (p.y - c.y);
       if (d2 < r2 && d2 < now2) return true;
     }
+  }
+  return false;
+}
+
+bool corridor_holds_return(const slam::LaserScan& scan, double half_width, double reach) {
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (!scan.is_return(i)) continue;
+    const Point p = end_point(scan, i);
+    if (p.x > 0 && p.x < reach && std::abs(p.y) < half_width) return true;
   }
   return false;
 }

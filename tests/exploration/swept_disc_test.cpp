@@ -56,6 +56,20 @@ TEST(SweptDisc, AnArcTurningIntoAJambIsStoppedWhereAStraightCorridorIsNot) {
   EXPECT_FALSE(sweeps_into(tip, 0.2, -0.8));  // turning away from it
 }
 
+TEST(SweptDisc, TheStraightCorridorHoldsReturnsAheadWithinItsWidthAndReach) {
+  auto holds = [](Return p, double half_width) {
+    slam::LaserScan scan = scan_of({p});
+    scan.angle_min = std::atan2(p.y, p.x);
+    return corridor_holds_return(scan, half_width, 0.37);
+  };
+  EXPECT_TRUE(holds({0.2, 0.11}, 0.12));
+  EXPECT_FALSE(holds({0.2, 0.11}, 0.10));   // beside a corridor the body's width
+  EXPECT_FALSE(holds({0.5, 0.0}, 0.12));    // beyond the reach
+  EXPECT_FALSE(holds({-0.05, 0.0}, 0.12));  // behind the robot
+  // The jamb the arc turns into (below) is outside a straight corridor the body's width.
+  EXPECT_FALSE(holds({0.08, 0.11}, 0.10));
+}
+
 TEST(SweptDisc, AReturnTheRobotMovesAwayFromDoesNotCount) {
   EXPECT_FALSE(sweeps_into({-0.05, 0.0}, 0.2, 0.0));  // touching the back of the body
   EXPECT_FALSE(sweeps_into({0.0, 0.0}, 0.0, 0.0));    // not moving

@@ -23,4 +23,9 @@ struct DiscMotion {
 /// do not count, so the robot may drive along a jamb 1 cm away.
 bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMotion& motion);
 
+/// True when a laser end point of `scan` lies ahead of the robot (x > 0) within `reach` [m]
+/// and less than `half_width` [m] to either side: the straight corridor the reactive stop
+/// checks where walls are not centimetres away.
+bool corridor_holds_return(const slam::LaserScan& scan, double half_width, double reach);
+
 }  // namespace lookahead::exploration
