@@ -135,6 +135,14 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(e.value(), "lots");
   EXPECT_EQ(parse_error("lookahead:\n  similarity_threshold: 0.95\n").file(), "my.yaml");  // outside 0.4..0.7
   EXPECT_EQ(parse_error("lookahead:\n  targets_per_selection: 0\n").file(), "my.yaml");
+  // The maze's opt-in skip rules.
+  e = parse_error("lookahead:\n  predict_while_idle: sometimes\n");
+  EXPECT_EQ(e.line(), 2u);
+  EXPECT_EQ(e.field(), "lookahead.predict_while_idle");
+  EXPECT_EQ(e.value(), "sometimes");
+  EXPECT_EQ(parse_error("lookahead:\n  repredict_after: 0\n").file(), "my.yaml");
+  EXPECT_EQ(parse_error("lookahead:\n  skip_region_wall_gap: -0.5\n").file(), "my.yaml");
+  EXPECT_EQ(parse_error("lookahead:\n  neighbours_last: true\n").file(), "my.yaml");  // needs a region
   e = parse_error("slam:\n  prediction:\n    hit_ratio_threshold: high\n");
   EXPECT_EQ(e.line(), 3u);
   EXPECT_EQ(e.field(), "prediction.hit_ratio_threshold");
