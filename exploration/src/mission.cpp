@@ -40,6 +40,9 @@ constexpr double kSameGoalRadius = 1.0;
 // around) before the last resort (mission_escapes.cpp).
 constexpr int kOrdinaryTries = 3;
 
+// The stuck clock restarts when the robot gets this much closer to its goal [m].
+constexpr double kProgressStep = 0.2;
+
 MissionOptions checked(MissionOptions o) {
   o.validate();
   // The predictive strategy and a filter that uses hypotheses both need predictions made.
@@ -222,7 +225,7 @@ void Mission::decide() {
   // A blocked path is no reason to change the target: only a target that stopped being
   // worth it is. Re-choosing on every blocked path swaps between far frontiers.
   if (path_blocked_ && goal_ && goal_still_useful()) {
-    if (replan_current_goal()) return;
+    if (replan_current_goal() || squeeze_to_goal()) return;
     // No way to the goal any more. The map often lets it back a moment later, and a new
     // selection resets the stuck clock, so two such goals can take turns for good
     // (kth_50055641 nearest swapped between two every 25 s for the last 1000 s of its
@@ -253,11 +256,22 @@ bool Mission::need_new_path() {
   next_goal_check_ = time_ + options_.goal_check_period;
   const slam::Pose2 p = estimate();
   const double d = std::hypot(goal_->x - p.x, goal_->y - p.y);
-  if (d < best_goal_distance_ - 0.2) {
-    best_goal_distance_ = d;
+  // On kth_50015848 most goals the stuck clock gave up were being driven to: a path around
+  // a wall led away from the goal for the whole 30 s (1.5 m away, 13.5 m of path left).
+  // The path left is the measure there; its best is kept across replans, so a robot that
+  // swaps between routes without shortening either is still stuck.
+  const double left = options_.progress_along_path ? follower_->remaining_length() : INFINITY;
+  if (d < best_goal_distance_ - kProgressStep || left < best_path_left_ - kProgressStep) {
+    best_goal_distance_ = std::min(d, best_goal_distance_);
+    best_path_left_ = std::min(left, best_path_left_);
     last_progress_time_ = time_;
+    progress_path_length_ = path_length_;
   }
   if (time_ - last_progress_time_ > options_.stuck_time) {
+    spdlog::debug("t {:.1f}: stuck on ({:.2f}, {:.2f}): {:.2f} m away, {:.2f} m of path left, {:.2f} m driven since "
+                  "the last progress{}{}",
+                  time_, goal_->x, goal_->y, d, follower_->remaining_length(), path_length_ - progress_path_length_,
+                  squeezing_ ? ", squeezing" : "", backtracking_ ? ", backtracking" : "");
     blacklist_.add(goal_->x, goal_->y, time_);
     ++stats_.stuck_goals;
     return true;
@@ -342,6 +356,9 @@ void Mission::select_new_target() {
     // one). Frontiers that are only blacklisted for a while are no trap: the robot looks
     // around until an entry expires (each spot is retried at most max_strikes times).
     if (s.waiting_on_blacklist) {
+      // Frontiers behind doors the margin closes may be waiting meanwhile (on kth_50015848
+      // the robot looked around for 70-110 s at a time).
+      if (options_.squeeze_when_blocked && squeeze()) return;
       turned_ = 0.0;
       return;
     }
@@ -367,7 +384,9 @@ void Mission::follow(const Selection& s, const planner::FollowerOptions& trackin
   follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
   const slam::Pose2 p = estimate();
   best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);  // the stuck clock starts
+  best_path_left_ = options_.progress_along_path ? planner::path_length(s.path) : INFINITY;
   last_progress_time_ = time_;
+  progress_path_length_ = path_length_;
   next_goal_check_ = time_ + options_.goal_check_period;
 }
 

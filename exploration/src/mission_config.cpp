@@ -28,6 +28,7 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v("coverage_goal", o.coverage_goal, "stop at this share of the reachable free area, (0, 1]");
   v("goal_check_period", o.goal_check_period, "the current goal is re-examined this often [s]");
   v("stuck_time", o.stuck_time, "no progress this long blacklists the goal [s]");
+  v("progress_along_path", o.progress_along_path, "a shorter path left to the goal is progress too");
   v("max_goal_attempts", o.max_goal_attempts, "candidates tried per selection before trapped");
   v("metrics_period", o.metrics_period, "coverage is sampled this often [s]");
   v("frame_period", o.frame_period, "animation frame every [s]; 0 = no animation");
@@ -37,6 +38,7 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v("stop_distance", o.stop_distance, "reactive stop for laser points this close ahead [m]");
   v("backtrack", o.backtrack, "no frontier reachable: retrace the robot's trail out of its place");
   v("squeeze", o.squeeze, "last resort before trapped: plan without the safety margin");
+  v("squeeze_when_blocked", o.squeeze_when_blocked, "also squeeze to a goal the margin closed on the way");
   v.section("robot");
   v("radius", o.robot.radius, "disc radius [m], > 0");
   v("max_speed", o.robot.max_speed, "[m/s], > 0");

@@ -147,4 +147,12 @@ bool PathFollower::path_still_valid(const Costmap& costmap) const {
   return drop_escape(costmap, remaining) && costmap.path_is_free(remaining);
 }
 
+double PathFollower::remaining_length() const {
+  if (segment_ + 1 >= path_.size()) return 0.0;
+  double length = std::hypot(path_[segment_ + 1].x - projection_.x, path_[segment_ + 1].y - projection_.y);
+  for (std::size_t i = segment_ + 1; i + 1 < path_.size(); ++i)
+    length += std::hypot(path_[i + 1].x - path_[i].x, path_[i + 1].y - path_[i].y);
+  return length;
+}
+
 }  // namespace lookahead::planner

@@ -69,6 +69,24 @@ TEST(PathFollower, DrivesUnicycleAlongLShapedPathInsideCorridor) {
   EXPECT_EQ(stop.omega, 0.0);
 }
 
+// The path left (the stuck clock's measure of progress around a wall) shrinks as the robot
+// drives along the L, from its whole length to zero at the goal, and never grows.
+TEST(PathFollower, PathLeftShrinksAlongTheWayToZero) {
+  const Path path{{0.5, 0.5}, {3.5, 0.5}, {3.5, 3.5}};
+  PathFollower follower(path, FollowerOptions{});
+  EXPECT_NEAR(follower.remaining_length(), 6.0, 1e-9);
+  Pose2 pose{0.5, 0.5, 0.0};
+  double last = follower.remaining_length();
+  for (int steps = 0; steps < 4000 && !follower.goal_reached(); ++steps) {
+    pose = integrate(pose, follower.command(pose), 0.05);
+    ASSERT_LE(follower.remaining_length(), last + 1e-9) << "step " << steps;
+    last = follower.remaining_length();
+    if (std::fabs(pose.x - 2.0) < 0.01 && pose.y < 1.0) EXPECT_NEAR(last, 4.5, 0.1);
+  }
+  EXPECT_TRUE(follower.goal_reached());
+  EXPECT_LT(follower.remaining_length(), 0.15);  // the goal tolerance (0.1 m) from the projection
+}
+
 // Planner and follower together: the robot's disc never touches a wall of the gap world.
 TEST(PathFollower, FollowsAPlannedPathThroughTheGapWithoutTouchingWalls) {
   set_ompl_log_level(OmplLogLevel::kWarn);

@@ -45,7 +45,8 @@ struct MissionStatistics {
   int collisions = 0;
   int safety_stops = 0;  ///< steps the reactive stop held the robot
   int backtracks = 0;    ///< escapes along the robot's own trail (no frontier was reachable)
-  int squeezes = 0;      ///< paths planned without the safety margin (no frontier was reachable)
+  int squeezes = 0;      ///< paths planned without the safety margin
+  int blocked_squeezes = 0;  ///< of those, to a goal whose way the margin had closed
   std::size_t retired_frontier_cells = 0;  ///< frontier cells that outlived a visit
   std::size_t scans = 0, map_refreshes = 0;
   bool ended_on_predictions = false;  ///< done because every frontier left was predicted
@@ -106,6 +107,8 @@ class Mission {
   bool backtrack();  ///< follows the trail out of a place with no reachable frontier
   bool squeeze();    ///< plans to a frontier on the map inflated by the body alone
   bool last_resort();  ///< squeeze or backtrack, alternating, before the mission is trapped
+  bool squeeze_to_goal();  ///< the current goal on the map inflated by the body alone
+  planner::Costmap body_costmap() const;  ///< the map inflated by the body, no safety margin
   planner::FollowerOptions close_tracking() const;  ///< for paths that fit only where drawn
   void follow(const Selection& s, const planner::FollowerOptions& tracking);  ///< a new goal and path
   bool path_ahead_blocked(const planner::VelocityCommand& cmd) const;
@@ -145,7 +148,7 @@ class Mission {
   MissionStatistics stats_;
   double time_ = 0.0, path_length_ = 0.0, turned_ = 0.0;
   double next_goal_check_ = 0.0, next_metrics_ = 0.0;
-  double best_goal_distance_ = 0.0, last_progress_time_ = 0.0;
+  double best_goal_distance_ = 0.0, best_path_left_ = 0.0, last_progress_time_ = 0.0, progress_path_length_ = 0.0;
   int unreachable_streak_ = 0;
   int last_resorts_ = 0;  ///< squeezes and backtracks since the ordinary tries ran out
   bool map_changed_ = false;

@@ -32,6 +32,10 @@ struct MissionOptions {
   double coverage_goal = 0.95;       ///< stop at this share of the reachable free area, (0, 1]
   double goal_check_period = 1.0;    ///< how often the current goal is re-examined [s]
   double stuck_time = 30.0;          ///< no progress this long: blacklist the goal [s]
+  /// Progress towards a goal is also a shorter path left to drive, not only a shorter
+  /// straight line: a path around a wall can lead away from its goal for longer than
+  /// stuck_time.
+  bool progress_along_path = false;
   int max_goal_attempts = 5;         ///< candidates tried per selection before "trapped"
   double metrics_period = 1.0;       ///< coverage is sampled this often [s]
   double frame_period = 2.0;         ///< animation frame every [s]; 0 = no animation
@@ -54,6 +58,10 @@ struct MissionOptions {
   /// than the robot but narrower than robot + margin is no wall (the KTH plans have
   /// 0.3-0.4 m doors). A mission that never runs out of tries is unchanged by it.
   bool squeeze = true;
+  /// Squeeze before the last resort too: when the margin closes the way to a goal still
+  /// worth it (a door whose jambs get mapped on the way), and when every frontier the margin
+  /// leaves reachable is blacklisted for a while. Needs `squeeze`.
+  bool squeeze_when_blocked = false;
 
   slam::RbpfOptions slam;
   planner::PlannerOptions planner;

@@ -62,6 +62,8 @@ class PathFollower {
   [[nodiscard]] std::size_t segment() const { return segment_; }
   /// The robot's projection on the path (the start of the remaining path).
   [[nodiscard]] Point2 projection() const { return projection_; }
+  /// Arc length from the robot's projection to the goal [m].
+  [[nodiscard]] double remaining_length() const;
 
  private:
   void advance_projection(Point2 robot);
