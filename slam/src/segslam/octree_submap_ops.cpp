@@ -42,10 +42,15 @@ double near_share(const NearOccupiedField& field, const Pose4& pose, const Point
   return points.empty() ? 0.0 : static_cast<double>(near) / static_cast<double>(points.size());
 }
 
+struct CoarseBest {
+  Pose4 pose;
+  double score = 0.0;
+};
+
 // The best level pose on a grid around `guess` by the share of points near occupied voxels;
 // z stays the guess's (ICP corrects it on the floors).
-Pose4 coarse_search(const NearOccupiedField& field, const Points3& points, const Pose4& guess,
-                    const MatchingOptions& o, double step) {
+CoarseBest coarse_search(const NearOccupiedField& field, const Points3& points, const Pose4& guess,
+                         const MatchingOptions& o, double step) {
   const int n = static_cast<int>(o.search_radius / step);
   const double angle_step = 0.05;
   const int na = static_cast<int>(o.search_angle / angle_step);
@@ -60,7 +65,17 @@ Pose4 coarse_search(const NearOccupiedField& field, const Points3& points, const
       }
     }
   }
-  return best;
+  return {best, best_score};
+}
+
+// Why a match fails its acceptance tests, or "" when it passes them.
+const char* rejection_of(const Icp3Result& icp, const StructureFit& f, const MatchingOptions& o,
+                         const StructureTestOptions& so) {
+  if (icp.inlier_ratio < o.min_inlier_ratio) return "icp inliers";
+  if (f.points < so.min_points) return "structure points";
+  if (f.inlier_ratio < so.min_inlier_ratio) return "structure inliers";
+  if (f.free_ratio > so.max_free_ratio) return "free space";
+  return "";
 }
 
 }  // namespace
@@ -165,18 +180,21 @@ void find_structure(SweepWindow& w, const MatchingOptions& o) {
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w, const Pose4& guess,
                           const MatchingOptions& o, const StructureTestOptions& so) {
   WindowMatch3 m;
+  m.rejection = "too few points";
   if (target.icp.size() < 10 || w.cloud.size() < 10) return m;
   // The near field reaches one voxel around a surface: steps of 1.5 voxels miss no peak.
-  const Pose4 seed = coarse_search(target.field, w.scored, guess, o, 1.5 * o.bin_size);
-  const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance});
+  const CoarseBest seed = coarse_search(target.field, w.scored, guess, o, 1.5 * o.bin_size);
+  m.guess_score = near_share(target.field, guess, w.scored);
+  m.coarse_score = seed.score;
+  const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed.pose, {o.icp_iterations, o.icp_max_distance});
   m.pose = icp.transform;
   m.all_points_error = icp.mean_error;
   m.translation = (m.pose.position() - guess.position()).norm();
   m.structure = structure_fit(w.structure, target.structure, m.pose,
                               [&](const Eigen::Vector3d& q) { return target.field.seen(q); });
   m.icp_error = m.structure.mean_error;
-  m.ok = icp.inlier_ratio >= o.min_inlier_ratio && m.structure.points >= so.min_points &&
-         m.structure.inlier_ratio >= so.min_inlier_ratio && m.structure.free_ratio <= so.max_free_ratio;
+  m.rejection = rejection_of(icp, m.structure, o, so);
+  m.ok = *m.rejection == '\0';
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
   return m;
 }

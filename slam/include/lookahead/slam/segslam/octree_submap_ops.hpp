@@ -78,6 +78,9 @@ struct WindowMatch3 {
   double translation = 0.0;  ///< tau_m: distance from the guess [m]
   double weight = 0.0;       ///< eq. 18
   StructureFit structure;    ///< the window's structure at `pose`
+  double guess_score = 0.0;   ///< the coarse search's score (share of points near surfaces) at the guess
+  double coarse_score = 0.0;  ///< ... and at its best pose, which seeds ICP
+  const char* rejection = "";  ///< why the match failed (empty when ok): for the debug log
 };
 
 /// Sec. 4.5: a coarse search (x, y, yaw around `guess`, share of points near occupied voxels)
