@@ -78,6 +78,7 @@ nlohmann::json match_json(const slam::segslam::MatchEvent3& e, const slam::Range
   const slam::Pose4 off = truth.between(e.reference.between(e.pose));
   const slam::Pose4 guess_off = truth.between(e.reference.between(e.guess));
   j["truth_position_error_m"] = off.position().norm();
+  j["truth_offset"] = {off.x, off.y, off.z, off.yaw};  // the claim against the truth, in the truth's reference frame
   j["truth_yaw_error_rad"] = off.yaw;
   j["guess_truth_position_error_m"] = guess_off.position().norm();
   j["guess_truth_yaw_error_rad"] = guess_off.yaw;
@@ -95,6 +96,7 @@ nlohmann::json attempt_json(const slam::segslam::MatchAttempt3& a, const slam::R
                    {"outcome", slam::segslam::name_of(a.outcome)},
                    {"rejection", a.rejection},
                    {"path_distance_m", a.path_distance},
+                   {"match_path_distance_m", a.match_path_distance},
                    {"proximity_radius_m", a.proximity_radius},
                    {"search_radius_m", a.search_radius},
                    {"guess_score", a.guess_score},

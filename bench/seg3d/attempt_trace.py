@@ -54,7 +54,7 @@ def main():
         if a.list:
             for e in near:
                 print(f"    sweep {e['sweep']:3d} p{e['particle']} cand {e['candidate']:3d} {e['outcome']:11s} "
-                      f"{e['rejection']:17s} guess {e['guess_truth_position_error_m']:5.2f} m "
+                      f"{e['rejection']:17s} match {e.get('match_path_distance_m', 0):4.1f} m from path, guess {e['guess_truth_position_error_m']:5.2f} m "
                       f"{e['guess_truth_yaw_error_rad']:+.3f} rad {e.get('guess_truth_height_error_m', 0):+.2f} m z off, {e['path_distance_m'] or 1e9:5.1f} m from path "
                       f"(r {e['proximity_radius_m']:.1f}, search {e['search_radius_m']:.1f}), robot truly "
                       f"{e['truth_distance_to_candidate_path_m']:.1f} m, coarse {e['guess_score']:.2f}->{e['coarse_score']:.2f}")

@@ -38,7 +38,7 @@ bool explained(OctreeReader& reader, const OctreeGrid& grid, float occupied_abov
 
 double near_share(const NearOccupiedField& field, const Pose4& pose, const Points3& points) {
   int near = 0;
-  for (const auto& p : points) near += field.near(apply(pose, p)) ? 1 : 0;
+  for (const auto& p : points) near += field.near_in_plane(apply(pose, p)) ? 1 : 0;
   return points.empty() ? 0.0 : static_cast<double>(near) / static_cast<double>(points.size());
 }
 
@@ -118,22 +118,24 @@ NearOccupiedField::NearOccupiedField(const EvidenceOctree& map) : resolution_(ma
     x0_ = std::min<long>(x0_, k.x), y0_ = std::min<long>(y0_, k.y), z0_ = std::min<long>(z0_, k.z);
     x1 = std::max<long>(x1, k.x), y1 = std::max<long>(y1, k.y), z1 = std::max<long>(z1, k.z);
   }
-  x0_ -= 1, y0_ -= 1, z0_ -= 1;
-  nx_ = x1 - x0_ + 2, ny_ = y1 - y0_ + 2, nz_ = z1 - z0_ + 2;
+  x0_ -= 1, y0_ -= 1, z0_ -= kLevelReach;
+  nx_ = x1 - x0_ + 2, ny_ = y1 - y0_ + 2, nz_ = z1 - z0_ + 1 + kLevelReach;
   bits_.assign(static_cast<std::size_t>(nx_ * ny_ * nz_), 0);
   for (const auto& k : occupied) {
-    for (long dz = 0; dz <= 2; ++dz) {
-      for (long dy = 0; dy <= 2; ++dy) {
-        for (long dx = 0; dx <= 2; ++dx) {
-          const long x = k.x - x0_ - 1 + dx, y = k.y - y0_ - 1 + dy, z = k.z - z0_ - 1 + dz;
-          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 1;
+    for (long dz = -kLevelReach; dz <= kLevelReach; ++dz) {
+      for (long dy = -1; dy <= 1; ++dy) {
+        for (long dx = -1; dx <= 1; ++dx) {
+          const long x = k.x - x0_ + dx, y = k.y - y0_ + dy, z = k.z - z0_ + dz;
+          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= std::abs(dz) <= 1 ? 5 : 4;
         }
       }
     }
   }
   map.for_each_voxel([&](const OctreeKey& k, float) {
     const long x = k.x - x0_, y = k.y - y0_, z = k.z - z0_;
-    if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return;
+    // Observed voxels within one voxel of the occupied box only (the structure test's free
+    // space), however far the box is padded in z for near_in_plane.
+    if (x < 0 || y < 0 || z < kLevelReach - 1 || x >= nx_ || y >= ny_ || z >= nz_ - (kLevelReach - 1)) return;
     bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 2;
   });
 }
@@ -147,9 +149,11 @@ std::uint8_t NearOccupiedField::bits_at(const Eigen::Vector3d& p) const {
 
 bool NearOccupiedField::near(const Eigen::Vector3d& p) const { return (bits_at(p) & 1) != 0; }
 
+bool NearOccupiedField::near_in_plane(const Eigen::Vector3d& p) const { return (bits_at(p) & 4) != 0; }
+
 Seen NearOccupiedField::seen(const Eigen::Vector3d& p) const {
   const std::uint8_t b = bits_at(p);
-  return (b & 1) != 0 ? Seen::kNearOccupied : b != 0 ? Seen::kFree : Seen::kUnknown;
+  return (b & 1) != 0 ? Seen::kNearOccupied : (b & 2) != 0 ? Seen::kFree : Seen::kUnknown;
 }
 
 OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& o) {

@@ -204,6 +204,7 @@ std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, con
       MatchAttempt3& a = attempts[c.attempt];
       a.outcome = m.ok ? AttemptOutcome::kOffered : AttemptOutcome::kRejected;
       a.guess_score = m.guess_score, a.coarse_score = m.coarse_score, a.pose = m.pose, a.rejection = m.rejection;
+      a.match_path_distance = distance_to_path(segmap_.at(c.id), m.pose, options_.extras.proximity_height);
     }
     if (!m.ok) continue;
     ids.push_back(c.id);

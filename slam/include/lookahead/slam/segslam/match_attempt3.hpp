@@ -50,6 +50,7 @@ struct MatchAttempt3 {
   AttemptOutcome outcome = AttemptOutcome::kFar;
   double guess_score = 0.0, coarse_score = 0.0;  ///< WindowMatch3's, when matched
   Pose4 pose;                       ///< the match's pose, when matched
+  double match_path_distance = 0.0;  ///< from the match's pose to the candidate's path, in the plane [m]
   const char* rejection = "";       ///< WindowMatch3's, when rejected
 };
 
