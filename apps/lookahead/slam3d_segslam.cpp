@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "lookahead/slam/config/segslam_config.hpp"
@@ -77,9 +78,53 @@ nlohmann::json match_json(const slam::segslam::MatchEvent3& e, const slam::Range
   const slam::Pose4 off = truth.between(e.reference.between(e.pose));
   const slam::Pose4 guess_off = truth.between(e.reference.between(e.guess));
   j["truth_position_error_m"] = off.position().norm();
+  j["truth_offset"] = {off.x, off.y, off.z, off.yaw};  // the claim against the truth, in the truth's reference frame
   j["truth_yaw_error_rad"] = off.yaw;
   j["guess_truth_position_error_m"] = guess_off.position().norm();
   j["guess_truth_yaw_error_rad"] = guess_off.yaw;
+  return j;
+}
+
+/// A candidate considered for a re-entry, and with ground truth how far the map sample's
+/// guess is from the truth (relative to the candidate's path pose nearest the guess) and how
+/// near the robot truly is to where the candidate was mapped (same deck): was the right
+/// re-entry within reach, and what became of it. Also written to the debug log.
+nlohmann::json attempt_json(const slam::segslam::MatchAttempt3& a, const slam::RangeLog3& log) {
+  nlohmann::json j{{"sweep", a.sweep},
+                   {"particle", a.particle},
+                   {"candidate", a.candidate},
+                   {"outcome", slam::segslam::name_of(a.outcome)},
+                   {"rejection", a.rejection},
+                   {"path_distance_m", a.path_distance},
+                   {"match_path_distance_m", a.match_path_distance},
+                   {"proximity_radius_m", a.proximity_radius},
+                   {"search_radius_m", a.search_radius},
+                   {"guess_score", a.guess_score},
+                   {"coarse_score", a.coarse_score},
+                   {"reference_sweep", a.reference_sweep}};
+  std::string truth;
+  if (log.has_truth()) {
+    const auto level = [&](std::size_t s) { return slam::Pose4::level_of(*log.sweeps.at(s).truth); };
+    const slam::Pose4 off = level(a.reference_sweep).between(level(a.sweep)).between(a.reference.between(a.guess));
+    const slam::Pose4 now = level(a.sweep);
+    double near = std::numeric_limits<double>::infinity();
+    for (const auto& [first, last] : a.intervals) {
+      for (std::size_t s = first; s <= last && s < log.sweeps.size(); ++s) {
+        const slam::Pose4 q = level(s);
+        if (std::abs(q.z - now.z) <= 1.0) near = std::min(near, std::hypot(q.x - now.x, q.y - now.y));
+      }
+    }
+    j["guess_truth_position_error_m"] = off.position().norm();
+    j["guess_truth_yaw_error_rad"] = off.yaw;
+    j["guess_truth_height_error_m"] = off.z;
+    j["truth_distance_to_candidate_path_m"] = near;
+    truth = fmt::format(", guess {:.2f} m / {:.3f} rad from the truth, robot truly {:.1f} m from the candidate's path",
+                        off.position().norm(), off.yaw, near);
+  }
+  spdlog::debug("match attempt: sweep {} particle {} candidate {}: {}{}{}; guess {:.1f} m from its path (radius {:.1f} m, "
+                "search +-{:.1f} m), coarse score {:.2f} -> {:.2f}{}",
+                a.sweep, a.particle, a.candidate, slam::segslam::name_of(a.outcome), *a.rejection ? ": " : "",
+                a.rejection, a.path_distance, a.proximity_radius, a.search_radius, a.guess_score, a.coarse_score, truth);
   return j;
 }
 
@@ -101,6 +146,11 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
   for (const auto& e : st.match_offers) offers.push_back(match_json(e, log));
   j["match_events"] = events;
   j["match_offers"] = offers;
+  if (!st.attempts.empty()) {
+    nlohmann::json attempts = nlohmann::json::array();
+    for (const auto& a : st.attempts) attempts.push_back(attempt_json(a, log));
+    j["match_attempt_log"] = attempts;
+  }
   j["neff_history"] = st.neff;
   return j;
 }
@@ -130,6 +180,8 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   if (!run.segslam_config.empty()) {
     options.segslam = slam::load_segslam_options(run.segslam_config, slam::segslam::segslam3d_defaults());
   }
+  // SPDLOG_LEVEL=debug: every candidate considered is logged and kept in run.json.
+  options.extras.record_attempts = spdlog::should_log(spdlog::level::debug);
   SegSlam3d filter(options);
   ProgressBar bar("segslam3d", log.sweeps.size());
   const auto start = std::chrono::steady_clock::now();

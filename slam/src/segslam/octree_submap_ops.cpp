@@ -38,14 +38,19 @@ bool explained(OctreeReader& reader, const OctreeGrid& grid, float occupied_abov
 
 double near_share(const NearOccupiedField& field, const Pose4& pose, const Points3& points) {
   int near = 0;
-  for (const auto& p : points) near += field.near(apply(pose, p)) ? 1 : 0;
+  for (const auto& p : points) near += field.near_in_plane(apply(pose, p)) ? 1 : 0;
   return points.empty() ? 0.0 : static_cast<double>(near) / static_cast<double>(points.size());
 }
 
+struct CoarseBest {
+  Pose4 pose;
+  double score = 0.0;
+};
+
 // The best level pose on a grid around `guess` by the share of points near occupied voxels;
 // z stays the guess's (ICP corrects it on the floors).
-Pose4 coarse_search(const NearOccupiedField& field, const Points3& points, const Pose4& guess,
-                    const MatchingOptions& o, double step) {
+CoarseBest coarse_search(const NearOccupiedField& field, const Points3& points, const Pose4& guess,
+                         const MatchingOptions& o, double step) {
   const int n = static_cast<int>(o.search_radius / step);
   const double angle_step = 0.05;
   const int na = static_cast<int>(o.search_angle / angle_step);
@@ -60,7 +65,17 @@ Pose4 coarse_search(const NearOccupiedField& field, const Points3& points, const
       }
     }
   }
-  return best;
+  return {best, best_score};
+}
+
+// Why a match fails its acceptance tests, or "" when it passes them.
+const char* rejection_of(const Icp3Result& icp, const StructureFit& f, const MatchingOptions& o,
+                         const StructureTestOptions& so) {
+  if (icp.inlier_ratio < o.min_inlier_ratio) return "icp inliers";
+  if (f.points < so.min_points) return "structure points";
+  if (f.inlier_ratio < so.min_inlier_ratio) return "structure inliers";
+  if (f.free_ratio > so.max_free_ratio) return "free space";
+  return "";
 }
 
 }  // namespace
@@ -103,22 +118,24 @@ NearOccupiedField::NearOccupiedField(const EvidenceOctree& map) : resolution_(ma
     x0_ = std::min<long>(x0_, k.x), y0_ = std::min<long>(y0_, k.y), z0_ = std::min<long>(z0_, k.z);
     x1 = std::max<long>(x1, k.x), y1 = std::max<long>(y1, k.y), z1 = std::max<long>(z1, k.z);
   }
-  x0_ -= 1, y0_ -= 1, z0_ -= 1;
-  nx_ = x1 - x0_ + 2, ny_ = y1 - y0_ + 2, nz_ = z1 - z0_ + 2;
+  x0_ -= 1, y0_ -= 1, z0_ -= kLevelReach;
+  nx_ = x1 - x0_ + 2, ny_ = y1 - y0_ + 2, nz_ = z1 - z0_ + 1 + kLevelReach;
   bits_.assign(static_cast<std::size_t>(nx_ * ny_ * nz_), 0);
   for (const auto& k : occupied) {
-    for (long dz = 0; dz <= 2; ++dz) {
-      for (long dy = 0; dy <= 2; ++dy) {
-        for (long dx = 0; dx <= 2; ++dx) {
-          const long x = k.x - x0_ - 1 + dx, y = k.y - y0_ - 1 + dy, z = k.z - z0_ - 1 + dz;
-          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 1;
+    for (long dz = -kLevelReach; dz <= kLevelReach; ++dz) {
+      for (long dy = -1; dy <= 1; ++dy) {
+        for (long dx = -1; dx <= 1; ++dx) {
+          const long x = k.x - x0_ + dx, y = k.y - y0_ + dy, z = k.z - z0_ + dz;
+          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= std::abs(dz) <= 1 ? 5 : 4;
         }
       }
     }
   }
   map.for_each_voxel([&](const OctreeKey& k, float) {
     const long x = k.x - x0_, y = k.y - y0_, z = k.z - z0_;
-    if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return;
+    // Observed voxels within one voxel of the occupied box only (the structure test's free
+    // space), however far the box is padded in z for near_in_plane.
+    if (x < 0 || y < 0 || z < kLevelReach - 1 || x >= nx_ || y >= ny_ || z >= nz_ - (kLevelReach - 1)) return;
     bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 2;
   });
 }
@@ -132,9 +149,11 @@ std::uint8_t NearOccupiedField::bits_at(const Eigen::Vector3d& p) const {
 
 bool NearOccupiedField::near(const Eigen::Vector3d& p) const { return (bits_at(p) & 1) != 0; }
 
+bool NearOccupiedField::near_in_plane(const Eigen::Vector3d& p) const { return (bits_at(p) & 4) != 0; }
+
 Seen NearOccupiedField::seen(const Eigen::Vector3d& p) const {
   const std::uint8_t b = bits_at(p);
-  return (b & 1) != 0 ? Seen::kNearOccupied : b != 0 ? Seen::kFree : Seen::kUnknown;
+  return (b & 1) != 0 ? Seen::kNearOccupied : (b & 2) != 0 ? Seen::kFree : Seen::kUnknown;
 }
 
 OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& o) {
@@ -165,18 +184,21 @@ void find_structure(SweepWindow& w, const MatchingOptions& o) {
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w, const Pose4& guess,
                           const MatchingOptions& o, const StructureTestOptions& so) {
   WindowMatch3 m;
+  m.rejection = "too few points";
   if (target.icp.size() < 10 || w.cloud.size() < 10) return m;
   // The near field reaches one voxel around a surface: steps of 1.5 voxels miss no peak.
-  const Pose4 seed = coarse_search(target.field, w.scored, guess, o, 1.5 * o.bin_size);
-  const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance});
+  const CoarseBest seed = coarse_search(target.field, w.scored, guess, o, 1.5 * o.bin_size);
+  m.guess_score = near_share(target.field, guess, w.scored);
+  m.coarse_score = seed.score;
+  const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed.pose, {o.icp_iterations, o.icp_max_distance});
   m.pose = icp.transform;
   m.all_points_error = icp.mean_error;
   m.translation = (m.pose.position() - guess.position()).norm();
   m.structure = structure_fit(w.structure, target.structure, m.pose,
                               [&](const Eigen::Vector3d& q) { return target.field.seen(q); });
   m.icp_error = m.structure.mean_error;
-  m.ok = icp.inlier_ratio >= o.min_inlier_ratio && m.structure.points >= so.min_points &&
-         m.structure.inlier_ratio >= so.min_inlier_ratio && m.structure.free_ratio <= so.max_free_ratio;
+  m.rejection = rejection_of(icp, m.structure, o, so);
+  m.ok = *m.rejection == '\0';
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
   return m;
 }

@@ -14,6 +14,7 @@
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/rbpf3d/motion3_model.hpp"
+#include "lookahead/slam/segslam/candidate_reach.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/segmentation.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
@@ -47,6 +48,7 @@ struct SegSlam3d::Transition {
   OctreeSubmap closed;
   std::size_t candidate = kNoSubmap;
   std::vector<MatchEvent3> offers;  ///< the matches offered; the one taken is `chosen`
+  std::vector<MatchAttempt3> attempts;  ///< the candidates considered (record_attempts only)
 };
 
 /// Dead reckoning from the last update's sweep to this one, and this sweep's beams.
@@ -90,8 +92,9 @@ SegSlam3d::SegSlam3d(const SegSlam3dOptions& options)
   options_.filter.validate();
   validate(options_.segslam);
   const SegSlam3dExtras& e = options_.extras;
-  if (e.warmup_updates < 0 || !(e.proximity_height > 0) || e.window_points < 10) {
-    throw std::invalid_argument("segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10");
+  if (e.warmup_updates < 0 || !(e.proximity_height > 0) || e.window_points < 10 || !(e.max_search_radius >= 0)) {
+    throw std::invalid_argument(
+        "segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10, max_search_radius >= 0");
   }
   if (!(e.structure.min_inlier_ratio >= 0 && e.structure.min_inlier_ratio <= 1) ||
       !(e.structure.max_free_ratio >= 0 && e.structure.max_free_ratio <= 1)) {
@@ -161,7 +164,7 @@ const SweepWindow& SegSlam3d::window_with_structure(const SweepWindow& w) {
 
 std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, const SweepWindow& w,
                                                       std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
-                                                      std::mt19937_64& rng) {
+                                                      std::vector<MatchAttempt3>& attempts, std::mt19937_64& rng) {
   const MatchingOptions& o = options_.segslam.matching;
   const double now = sweeps_[last_update_].time;
   const auto sample = sample_local_map(segmap_, p.submap, kNoSubmap, o.sample_submaps, rng);
@@ -170,7 +173,9 @@ std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, con
     double distance;
     std::size_t id;
     Pose4 guess;
+    std::size_t attempt;  // index into `attempts` when recording
   };
+  const bool record = options_.extras.record_attempts;
   std::vector<Candidate> candidates;
   for (std::size_t i = 1; i < sample.size(); ++i) {
     const OctreeSubmap& c = segmap_.at(sample[i].id);
@@ -180,14 +185,27 @@ std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, con
     if (frame_root(segmap_, c)->interval == own_root->interval) continue;
     const Pose4 guess = sample[i].frame.inverse().compose(p.pose);
     const double d = distance_to_path(c, guess, options_.extras.proximity_height);
-    if (d > o.proximity_radius || !has_observed_near(c.map, guess.position(), o.proximity_radius)) continue;
-    candidates.push_back({d, sample[i].id, guess});
+    const double radius = candidate_options(sample[i].id).proximity_radius;
+    const bool far = d > radius;
+    const bool near = !far && has_observed_near(c.map, guess.position(), radius);
+    if (record) {
+      attempts.push_back(attempt_of(sample[i].id, guess, d));
+      attempts.back().outcome = far ? AttemptOutcome::kFar : near ? AttemptOutcome::kNotNearest : AttemptOutcome::kUnobserved;
+    }
+    if (!near) continue;
+    candidates.push_back({d, sample[i].id, guess, attempts.size() - 1});
   }
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
   if (candidates.size() > static_cast<std::size_t>(o.max_candidates)) candidates.resize(static_cast<std::size_t>(o.max_candidates));
   std::vector<WindowMatch3> out;
   for (const Candidate& c : candidates) {
     const WindowMatch3 m = cached_match(c.id, c.guess, w);
+    if (record) {
+      MatchAttempt3& a = attempts[c.attempt];
+      a.outcome = m.ok ? AttemptOutcome::kOffered : AttemptOutcome::kRejected;
+      a.guess_score = m.guess_score, a.coarse_score = m.coarse_score, a.pose = m.pose, a.rejection = m.rejection;
+      a.match_path_distance = distance_to_path(segmap_.at(c.id), m.pose, options_.extras.proximity_height);
+    }
     if (!m.ok) continue;
     ids.push_back(c.id);
     guesses.push_back(c.guess);
@@ -214,7 +232,7 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
     const Pose4 rounded{std::get<1>(key) * 0.5, std::get<2>(key) * 0.5, std::get<3>(key) * 0.5,
                         normalize_angle(std::get<4>(key) * 0.1)};
     if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
-    m = match_window(*target, window_with_structure(w), rounded, options_.segslam.matching, options_.extras.structure);
+    m = match_window(*target, window_with_structure(w), rounded, candidate_options(candidate), options_.extras.structure);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     targets_[candidate] = target;
     match_cache_.emplace(key, m);
@@ -222,20 +240,20 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
     stats_.matching_seconds += seconds_since(start);
   }
   m.translation = (m.pose.position() - guess.position()).norm();
-  m.weight = m.ok ? match_weight(m.icp_error, m.translation, tau_options(candidate)) : 0.0;
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;
   return m;
 }
 
-MatchingOptions SegSlam3d::tau_options(std::size_t candidate) const {
-  // Deviation: eq. 18's p(tau^2) widens with the eq. 13-14 error accumulated since the
-  // candidate was left, as sec. 4.5.2 spreads the localisation filter ("candidate positions
-  // at the end of long loops will be uncertain"): with a fixed 1.5 m, right re-entries
-  // after the garage loop (3-5 m from the map sample's guess) weighed nothing.
-  MatchingOptions o = options_.segslam.matching;
+MatchingOptions SegSlam3d::candidate_options(std::size_t candidate) const {
+  // Deviation (candidate_reach.hpp): eq. 18's p(tau^2), the proximity radius and the coarse
+  // search widen with the eq. 13-14 error accumulated since the candidate was left, as sec.
+  // 4.5.2 spreads the localisation filter ("candidate positions at the end of long loops
+  // will be uncertain"). With a fixed 1.5 m sigma, right re-entries after the garage loop
+  // (3-5 m from the map sample's guess) weighed nothing; with a fixed +-2 m search and 4 m
+  // radius they were not reached at all (seed 6, README).
   const double since = motion_error_sum_.at(last_update_) -
                        motion_error_sum_.at(segmap_.at(candidate).interval.last_scan);
-  o.translation_sigma = std::hypot(o.translation_sigma, since);
-  return o;
+  return candidate_reach(options_.segslam.matching, since, options_.extras.max_search_radius);
 }
 
 SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng) {
@@ -252,7 +270,7 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
   std::vector<WindowMatch3> matches;
   const bool periodic = p.updates_since_match >= mo.period_updates && p.submap_updates >= mo.period_updates;
   if (segment || periodic) {
-    matches = match_candidates(p, w, ids, guesses, rng);
+    matches = match_candidates(p, w, ids, guesses, t.attempts, rng);
     p.updates_since_match = 0;
   }
   std::vector<double> weights;
@@ -367,20 +385,43 @@ MatchEvent3 SegSlam3d::offer_of(std::size_t candidate, const Pose4& guess, const
   e.icp_error = m.icp_error, e.all_points_error = m.all_points_error;
   e.translation = m.translation, e.pose = m.pose, e.guess = guess;
   e.structure = m.structure;
+  std::tie(e.reference_sweep, e.reference) = nearest_path_pose(candidate, m.pose.position());
+  return e;
+}
+
+std::pair<std::size_t, Pose4> SegSlam3d::nearest_path_pose(std::size_t candidate, const Eigen::Vector3d& p) const {
   double best = std::numeric_limits<double>::infinity();
+  std::pair<std::size_t, Pose4> out{0, Pose4{}};
   // The candidate's ancestors share its frame (a match child copies its parent's).
   for (std::size_t id = candidate; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) {
     for (const auto& [sweep, q] : segmap_.at(id).path) {
-      const double d = (q.position() - m.pose.position()).norm();
-      if (d < best) best = d, e.reference_sweep = sweep, e.reference = q;
+      const double d = (q.position() - p).norm();
+      if (d < best) best = d, out = {sweep, q};
     }
   }
-  return e;
+  return out;
+}
+
+MatchAttempt3 SegSlam3d::attempt_of(std::size_t candidate, const Pose4& guess, double path_distance) const {
+  MatchAttempt3 a;
+  a.sweep = last_update_, a.candidate = candidate, a.guess = guess, a.path_distance = path_distance;
+  const MatchingOptions o = candidate_options(candidate);
+  a.proximity_radius = o.proximity_radius;
+  a.search_radius = o.search_radius;
+  std::tie(a.reference_sweep, a.reference) = nearest_path_pose(candidate, guess.position());
+  for (std::size_t id = candidate; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) {
+    a.intervals.emplace_back(segmap_.at(id).interval.first_scan, segmap_.at(id).interval.last_scan);
+  }
+  return a;
 }
 
 void SegSlam3d::store_transitions(std::vector<Transition>& transitions) {
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     Transition& t = transitions[i];
+    for (MatchAttempt3& a : t.attempts) {
+      a.particle = i;
+      stats_.attempts.push_back(std::move(a));
+    }
     for (const MatchEvent3& e : t.offers) {
       stats_.match_offers.push_back(e);
       if (e.chosen) stats_.match_events.push_back(e);

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "lookahead/slam/octree/ray_insertion.hpp"
+#include "lookahead/slam/segslam/candidate_reach.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
 #include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
@@ -148,6 +149,62 @@ TEST(OctreeSubmapOps, PredictiveScoreDropsWhenTheWindowLeavesTheSubmap) {
   EXPECT_LT(wrong, here - 0.3);
   EXPECT_TRUE(has_observed_near(map, log.sweeps[2].truth->translation(), 1.0));
   EXPECT_FALSE(has_observed_near(map, Eigen::Vector3d(500, 500, 0), 1.0));
+}
+
+// The fixed reach left the garage loop open (seed 6, 5 particles: the map sample's guess 3.5-5.3
+// m off the truth at the loop's end, +-2 m search): the proximity radius, the coarse search and
+// eq. 18's sigma_tau widen with the eq. 13-14 error since the candidate, the search capped.
+TEST(CandidateReach, WidensWithTheErrorSinceTheCandidateUpToTheCap) {
+  const MatchingOptions o = segslam3d_defaults().matching;  // search 2 m, proximity 4 m, sigma 1.5 m
+  const MatchingOptions same = candidate_reach(o, 0.0, 6.0);
+  EXPECT_DOUBLE_EQ(same.search_radius, o.search_radius);
+  EXPECT_DOUBLE_EQ(same.proximity_radius, o.proximity_radius);
+  EXPECT_DOUBLE_EQ(same.translation_sigma, o.translation_sigma);
+  const MatchingOptions wide = candidate_reach(o, 4.0, 6.0);
+  EXPECT_NEAR(wide.search_radius, std::hypot(2.0, 4.0), 1e-12);
+  EXPECT_NEAR(wide.proximity_radius, 4.0 + std::hypot(2.0, 4.0) - 2.0, 1e-12);
+  EXPECT_NEAR(wide.translation_sigma, std::hypot(1.5, 4.0), 1e-12);
+  const MatchingOptions capped = candidate_reach(o, 100.0, 6.0);
+  EXPECT_DOUBLE_EQ(capped.search_radius, 6.0);
+  EXPECT_DOUBLE_EQ(capped.proximity_radius, 8.0);
+  EXPECT_DOUBLE_EQ(candidate_reach(o, 100.0, 0.0).search_radius, o.search_radius);  // cap 0: the fixed search
+}
+
+// A guess 5 m and 0.2 m in height off (as at the garage loop's closure) is beyond the fixed +-2 m search: the
+// match fails or lands elsewhere. With the reach of a candidate left 5 m of eq. 13-14 error
+// ago, the same window finds the true pose, and the structure test passes it.
+TEST(OctreeSubmapOps, AGuessBeyondTheFixedSearchIsReachedWhenTheSearchWidens) {
+  const RangeLog3& log = garage_log();
+  const OctreeMatchTarget target = match_target_of(map_of(log, 5, 12), segslam3d_defaults().matching);
+  const SweepWindow w = window_of(log, 8, 11);
+  const Pose4 truth = Pose4::level_of(*log.sweeps[8].truth);
+  const Pose4 guess = truth.compose({4.0, -3.0, 0.2, 0.1});
+  const auto right = [&](const WindowMatch3& m) {
+    return m.ok && (m.pose.position() - truth.position()).norm() < 0.1 && std::abs(normalize_angle(m.pose.yaw - truth.yaw)) < 0.02;
+  };
+  const MatchingOptions fixed = segslam3d_defaults().matching;
+  EXPECT_FALSE(right(match_window(target, w, guess, fixed)));
+  const WindowMatch3 wide = match_window(target, w, guess, candidate_reach(fixed, 5.0, 6.0));
+  EXPECT_TRUE(right(wide)) << "at " << truth.between(wide.pose).x << ", " << truth.between(wide.pose).y << ": "
+                           << wide.rejection;
+  EXPECT_GT(wide.coarse_score, wide.guess_score);
+}
+
+// The coarse search leaves height to ICP: its test counts a point two voxels above a floor
+// (the map sample's guess was 0.2-0.35 m off in height at the garage loop's closure, so at the
+// right x, y and yaw the floor and ceiling points missed the 27-voxel test); the structure
+// test's own near test does not.
+TEST(NearOccupiedField, TheCoarseSearchsTestToleratesHeightErrorsTheStructureTestDoesNot) {
+  EvidenceOctree map;
+  for (double x = 0.1; x < 2.0; x += 0.2) {
+    for (double y = 0.1; y < 2.0; y += 0.2) map.update(*map.grid().key_of({x, y, 0.1}), true), map.update(*map.grid().key_of({x, y, 0.1}), true);
+  }
+  const NearOccupiedField field(map);
+  EXPECT_TRUE(field.near({1.0, 1.0, 0.3}) && field.near_in_plane({1.0, 1.0, 0.3}));
+  EXPECT_FALSE(field.near({1.0, 1.0, 0.5}));
+  EXPECT_TRUE(field.near_in_plane({1.0, 1.0, 0.5}));
+  EXPECT_FALSE(field.near_in_plane({1.0, 1.0, 0.9}));
+  EXPECT_FALSE(field.near_in_plane({3.0, 1.0, 0.1}));  // not in x, y
 }
 
 TEST(OctreeCanvas, PastesInFramesAndCountsCopiedEvidenceOnce) {

@@ -16,7 +16,8 @@
 // Submap frames are level (x, y, z, yaw), and proximity winnowing also bounds the height
 // difference (the garage's decks share x, y). A match is scored on the window's structure
 // points and vetoed when they land in the candidate's free space (structure_fit.hpp), and
-// eq. 18's p(tau^2) widens with the eq. 13-14 error since the candidate (tau_options).
+// eq. 18's p(tau^2), the proximity radius and the coarse search widen with the eq. 13-14
+// error since the candidate (candidate_reach.hpp).
 #pragma once
 
 #include <cstddef>
@@ -31,6 +32,7 @@
 
 #include "lookahead/slam/geometry/pose4.hpp"
 #include "lookahead/slam/rbpf3d/rbpf3d_options.hpp"
+#include "lookahead/slam/segslam/match_attempt3.hpp"
 #include "lookahead/slam/segslam/octree_submap_ops.hpp"
 #include "lookahead/slam/segslam/seg_map.hpp"
 #include "lookahead/slam/segslam/segment_picture.hpp"
@@ -54,6 +56,11 @@ struct SegSlam3dExtras {
   int window_points = 300;
   /// What a match's walls, columns and cars must show (structure_fit.hpp).
   StructureTestOptions structure;
+  /// The coarse search's reach widens with the eq. 13-14 error since a candidate was left,
+  /// up to this [m] (candidate_reach.hpp). >= 0; 0 keeps matching.search_radius.
+  double max_search_radius = 6.0;
+  /// Keep every candidate considered, with its outcome, in the statistics (debug log).
+  bool record_attempts = false;
 };
 
 /// The SegSLAM options for 3D sweeps: the 2D defaults with the bins, ICP and eq. 18 scales
@@ -102,6 +109,7 @@ struct SegSlam3dStatistics {
   std::vector<double> neff;
   std::vector<MatchEvent3> match_events;  ///< the matches taken
   std::vector<MatchEvent3> match_offers;  ///< every match offered to a particle, taken or not
+  std::vector<MatchAttempt3> attempts;    ///< every candidate considered (record_attempts only)
   double matching_seconds = 0;  ///< summed over threads: building targets, coarse search, ICP
 };
 
@@ -143,10 +151,12 @@ class SegSlam3d {
   void advance(SegParticle3& p, const SweepModel& model, std::mt19937_64& rng) const;
   std::vector<WindowMatch3> match_candidates(const SegParticle3& p, const SweepWindow& w,
                                              std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
-                                             std::mt19937_64& rng);
+                                             std::vector<MatchAttempt3>& attempts, std::mt19937_64& rng);
+  [[nodiscard]] std::pair<std::size_t, Pose4> nearest_path_pose(std::size_t candidate, const Eigen::Vector3d& p) const;
+  [[nodiscard]] MatchAttempt3 attempt_of(std::size_t candidate, const Pose4& guess, double path_distance) const;
   MatchEvent3 offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const;
   WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
-  [[nodiscard]] MatchingOptions tau_options(std::size_t candidate) const;
+  [[nodiscard]] MatchingOptions candidate_options(std::size_t candidate) const;
   const SweepWindow& window_with_structure(const SweepWindow& w);
   void store_transitions(std::vector<Transition>& transitions);
   void prune();
