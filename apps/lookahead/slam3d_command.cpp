@@ -38,6 +38,7 @@ struct Slam3dArgs {
   bool dump_config = false;
   std::string segslam_config;  ///< --method segslam: YAML on top of segslam3d_defaults()
   int map_samples = -1;        ///< --method segslam: offline samples (-1: the config's)
+  double max_search_radius = -1.0;  ///< --method segslam: reach cap (< 0: the default)
 };
 
 struct Input {
@@ -188,7 +189,8 @@ int run_slam3d(const Slam3dArgs& a) {
   const slam::Slam3dOptions options = options_from(a);
   const Input in = read_input(a, options);
   if (a.method == "segslam") {
-    run_segslam3d({a.input, input_name(a.input), a.out, a.segslam_config, a.map_samples, a.data_seed}, in.log, options);
+    run_segslam3d({a.input, input_name(a.input), a.out, a.segslam_config, a.map_samples, a.data_seed,
+                   a.max_search_radius}, in.log, options);
     if (in.world && a.input == "garage") slam::write_octomap(in.world->map, a.out + "/world.bt");
     return 0;
   }
@@ -235,6 +237,10 @@ Run add_slam3d_command(CLI::App& app) {
                  "--method segslam: SegSLAM YAML (see config/segslam/garage3d.yaml)");
   app.add_option("--map-samples", args->map_samples,
                  "--method segslam: offline map samples for the min-entropy map.bt");
+  app.add_option("--max-search-radius", args->max_search_radius,
+                 "--method segslam: cap of the re-entry search's reach [m], which widens with the motion error "
+                 "since the candidate (default 6; 0 keeps the fixed 2 m search)")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("--dump-config", args->dump_config, "print the documented default options and exit");
   return [args] { return run_slam3d(*args); };
 }

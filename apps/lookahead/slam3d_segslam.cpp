@@ -182,6 +182,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   }
   // SPDLOG_LEVEL=debug: every candidate considered is logged and kept in run.json.
   options.extras.record_attempts = spdlog::should_log(spdlog::level::debug);
+  if (run.max_search_radius >= 0) options.extras.max_search_radius = run.max_search_radius;
   SegSlam3d filter(options);
   ProgressBar bar("segslam3d", log.sweeps.size());
   const auto start = std::chrono::steady_clock::now();
@@ -218,6 +219,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   j["wall_time_s"] = wall;
   j["offline_search_s"] = search_s;
   j["map_samples"] = samples;
+  j["max_search_radius"] = options.extras.max_search_radius;
   j["map_entropy_nats_m3"] = best_map.best.entropy;
   j["sample_entropies"] = best_map.entropies;
   j["map_known_voxels"] = best_map.best.map.known_voxels();

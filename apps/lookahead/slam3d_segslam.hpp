@@ -19,6 +19,8 @@ struct SegSlam3dRun {
   std::string segslam_config;  ///< YAML on top of segslam3d_defaults(), may be empty
   int map_samples = -1;        ///< offline samples; -1: the config's offline.map_samples
   long long data_seed = 1;
+  /// Cap of the coarse search's widening reach [m] (candidate_reach.hpp); < 0: the default.
+  double max_search_radius = -1.0;
 };
 
 /// segslam3d_defaults() as YAML (config/segslam/garage3d.yaml).

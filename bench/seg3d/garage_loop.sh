@@ -9,6 +9,7 @@
 #
 # usage: bench/seg3d/garage_loop.sh [OUT] [RUNS] [COUNTS...]
 #   e.g. METHODS="rbpf segslam" bench/seg3d/garage_loop.sh out/garage_loop 5 1 5 10 20 40
+#   SEGSLAM_ARGS="--max-search-radius 0" passes options to the SegSLAM runs only.
 set -euo pipefail
 out=${1:-out/garage_loop}
 runs=${2:-5}
@@ -27,8 +28,10 @@ for seed in $(seq 1 "$runs"); do
       [ "$m" = rbpf ] || dir="$out/$m-p$n-s$seed"
       [ -f "$dir/run.json" ] && continue  # resumable
       echo "$m, particles $n, seed $seed"
+      extra=()
+      [ "$m" = segslam ] && read -r -a extra <<< "${SEGSLAM_ARGS:-}"
       "$bin" slam3d garage --method "$m" --particles "$n" --seed "$seed" --data-seed 1 --map-samples 1 \
-        --out "$dir" > "$dir.log" 2>&1
+        "${extra[@]}" --out "$dir" > "$dir.log" 2>&1
     done
   done
 done
