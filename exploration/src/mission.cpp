@@ -300,6 +300,7 @@ SelectionInputs Mission::selection_inputs() {
                      options_.laser.max_range, options_.max_goal_attempts, options_.planner};
   in.planner.seed = static_cast<std::uint32_t>(options_.planner.seed + static_cast<std::uint32_t>(stats_.plans));
   in.robot_radius = options_.robot.radius;
+  in.gain_line_of_sight = options_.gain_line_of_sight;
   if (lookahead_) {
     in.predicted = &lookahead_->predicted();
     in.skip = options_.lookahead.skip_rule();

@@ -22,6 +22,7 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v.section("mission");
   v("strategy", o.strategy, "target selection: nearest | utility | predictive | predictive-utility");
   v("utility_lambda", o.utility_lambda, "utility = gain [m^2] - lambda * cost [m]");
+  v("gain_line_of_sight", o.gain_line_of_sight, "gain: unknown area in line of sight (false: the whole disc)");
   v("pose_source", o.pose_source, "slam (RBPF in the loop) | truth (map at the true pose)");
   v("seed", o.seed, "seeds the sensor, odometry, SLAM (filter.seed) and planner");
   v("time_limit", o.time_limit, "simulated seconds, > 0");

@@ -100,6 +100,7 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
                              const TravelCost& cost, bool& any_reachable, bool& any_waiting) {
   const planner::Costmap& cm = *in.costmap;
   std::vector<Candidate> out;
+  const auto gain = in.gain_line_of_sight ? visible_information_gain : information_gain;
   any_reachable = false;
   any_waiting = false;
   for (const FrontierCluster& f : clusters) {
@@ -117,12 +118,12 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
     if (in.predicted && in.strategy->uses_prediction()) {
       const PredictedMap& pm = *in.predicted;
       const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
-      out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known),
+      out.push_back({&f, d, gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known),
                      pm.covered_share(*in.map, f, in.skip)});
       if (in.skip.neighbours_last) out.back().borders_prediction = pm.borders_prediction(*in.map, f, in.skip);
       continue;
     }
-    out.push_back({&f, d, information_gain(*in.map, f.goal_x, f.goal_y, in.sensor_range), 0.0});
+    out.push_back({&f, d, gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, nullptr), 0.0});
   }
   return out;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Expected information of a goal: the unknown area a sensor of the given range could see
-// from it (the disc approximation of Gonzalez-Banos & Latombe 2002, without occlusion: it
-// ranks frontiers, it does not predict the scan).
+// Expected information of a goal: the unknown area a 360-degree sensor of the given range
+// could see from it (Gonzalez-Banos & Latombe 2002, sec. 4: the area of the unknown region
+// visible from a candidate; it ranks frontiers, it does not predict the scan).
 #pragma once
 
 #include <functional>
@@ -10,9 +10,20 @@
 
 namespace lookahead::exploration {
 
-/// Unknown area [m^2] within `range` of (x, y). `counts_as_known` lets a caller treat more
-/// cells as known (the P-SLAM strategy passes its predicted cells); null = none.
+/// Cells a caller treats as known besides the map's (the P-SLAM strategy passes its
+/// predicted cells); null = none.
+using CountsAsKnown = std::function<bool(slam::CellIndex)>;
+
+/// Unknown area [m^2] in line of sight within `range` of (x, y): rays fan out from the goal
+/// and stop at the map's occupied cells; unknown cells are taken to be transparent (the
+/// optimistic assumption of Gonzalez-Banos & Latombe). Space behind a wall already mapped,
+/// such as the outside of the building, does not count.
+double visible_information_gain(const slam::OccupancyGrid& grid, double x, double y, double range,
+                                const CountsAsKnown& counts_as_known = nullptr);
+
+/// Unknown area [m^2] within `range` of (x, y), walls ignored (the disc approximation; the
+/// studies measured before line of sight use it: `mission.gain_line_of_sight: false`).
 double information_gain(const slam::OccupancyGrid& grid, double x, double y, double range,
-                        const std::function<bool(slam::CellIndex)>& counts_as_known = nullptr);
+                        const CountsAsKnown& counts_as_known = nullptr);
 
 }  // namespace lookahead::exploration

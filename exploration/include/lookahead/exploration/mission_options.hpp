@@ -26,6 +26,9 @@ enum class PoseSource {
 struct MissionOptions {
   std::string strategy = "nearest";  ///< target selection: nearest | utility | predictive
   double utility_lambda = 1.0;       ///< utility = gain [m^2] - lambda * cost [m]
+  /// The gain counts only unknown area in line of sight of the goal (walls occlude); false:
+  /// the whole disc within sensor range, space behind outer walls included.
+  bool gain_line_of_sight = true;
   PoseSource pose_source = PoseSource::kSlam;
   std::uint64_t seed = 1;            ///< seeds the sensor, odometry, SLAM and planner
   double time_limit = 1800.0;        ///< simulated seconds, > 0
