@@ -2,20 +2,18 @@
 #include "lookahead/slam/segslam/point_icp3.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 namespace lookahead::slam::segslam {
 namespace {
 
 constexpr int kMinNormalNeighbours = 5;
-
-std::int64_t pack(long x, long y, long z) {
-  // 21 bits per axis: +-1e6 bins, far beyond any map here.
-  const auto u = [](long v) { return static_cast<std::int64_t>(v + (1L << 20)) & ((1LL << 21) - 1); };
-  return (u(x) << 42) | (u(y) << 21) | u(z);
-}
 
 Eigen::Vector3d apply(const Pose4& t, const Eigen::Vector3d& p) {
   const double c = std::cos(t.yaw), s = std::sin(t.yaw);
@@ -40,7 +38,7 @@ Points3 bin_points3(const Points3& points, double bin) {
 }
 
 IcpTarget3::IcpTarget3(Points3 points, double max_distance) : points_(std::move(points)), cell_(max_distance) {
-  for (std::size_t i = 0; i < points_.size(); ++i) cells_[cell_key(points_[i])].push_back(static_cast<long>(i));
+  index_cells();
   normals_.assign(points_.size(), Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < points_.size(); ++i) {
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -59,19 +57,46 @@ IcpTarget3::IcpTarget3(Points3 points, double max_distance) : points_(std::move(
   }
 }
 
-std::int64_t IcpTarget3::cell_key(const Eigen::Vector3d& p, int dx, int dy, int dz) const {
-  return pack(std::lround(std::floor(p.x() / cell_)) + dx, std::lround(std::floor(p.y() / cell_)) + dy,
-              std::lround(std::floor(p.z() / cell_)) + dz);
+// A counting sort of the points by cell: stable, so each cell lists its points in index order.
+void IcpTarget3::index_cells() {
+  if (points_.empty()) return;
+  long x1 = 0, y1 = 0, z1 = 0;
+  x0_ = y0_ = z0_ = std::numeric_limits<long>::max();
+  x1 = y1 = z1 = std::numeric_limits<long>::min();
+  for (const auto& p : points_) {
+    const long x = cell_of(p.x()), y = cell_of(p.y()), z = cell_of(p.z());
+    x0_ = std::min(x0_, x), y0_ = std::min(y0_, y), z0_ = std::min(z0_, z);
+    x1 = std::max(x1, x), y1 = std::max(y1, y), z1 = std::max(z1, z);
+  }
+  nx_ = x1 - x0_ + 1, ny_ = y1 - y0_ + 1, nz_ = z1 - z0_ + 1;
+  if (nx_ > kMaxCells / ny_ / nz_) {
+    throw std::invalid_argument("IcpTarget3: the cloud spans " + std::to_string(nx_) + " x " + std::to_string(ny_) +
+                                " x " + std::to_string(nz_) + " cells, more than " + std::to_string(kMaxCells));
+  }
+  const auto cell = [&](const Eigen::Vector3d& p) {
+    return static_cast<std::size_t>(((cell_of(p.z()) - z0_) * ny_ + (cell_of(p.y()) - y0_)) * nx_ + (cell_of(p.x()) - x0_));
+  };
+  first_.assign(static_cast<std::size_t>(nx_ * ny_ * nz_) + 1, 0);
+  for (const auto& p : points_) ++first_[cell(p) + 1];
+  for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
+  by_cell_.resize(points_.size());
+  std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
+  for (std::size_t i = 0; i < points_.size(); ++i) by_cell_[next[cell(points_[i])]++] = static_cast<std::uint32_t>(i);
 }
 
 template <class F>
 void IcpTarget3::for_each_near(const Eigen::Vector3d& q, F&& f) const {
-  for (int dx = -1; dx <= 1; ++dx) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dz = -1; dz <= 1; ++dz) {
-        const auto it = cells_.find(cell_key(q, dx, dy, dz));
-        if (it == cells_.end()) continue;
-        for (long j : it->second) f(j);
+  const long kx = cell_of(q.x()) - x0_, ky = cell_of(q.y()) - y0_, kz = cell_of(q.z()) - z0_;
+  // x outermost, z innermost: the order of the hash grid this replaced, so equally near
+  // points resolve as before and neighbour sums add up in the same order.
+  for (long x = kx - 1; x <= kx + 1; ++x) {
+    if (x < 0 || x >= nx_) continue;
+    for (long y = ky - 1; y <= ky + 1; ++y) {
+      if (y < 0 || y >= ny_) continue;
+      for (long z = kz - 1; z <= kz + 1; ++z) {
+        if (z < 0 || z >= nz_) continue;
+        const auto c = static_cast<std::size_t>((z * ny_ + y) * nx_ + x);
+        for (std::uint32_t k = first_[c]; k < first_[c + 1]; ++k) f(static_cast<long>(by_cell_[k]));
       }
     }
   }
