@@ -10,10 +10,11 @@
 namespace lookahead::slam::segslam {
 namespace {
 
-// v[i] |= v[i + s] along a row of `count` cells from `first`, repeated until each cell holds
-// the OR of itself and the w - 1 cells after it (the width covered doubles per pass).
-void spread(std::vector<std::uint8_t>& v, std::size_t first, std::size_t count, int w) {
-  for (int covered = 1; covered < w;) {
+// v[i] |= v[i + s] along a row of `count` cells from `first`: each cell holding the OR of
+// itself and the covered - 1 cells after it then holds that of the w - 1 after it (the width
+// covered at most doubles per pass).
+void spread(std::vector<std::uint8_t>& v, std::size_t first, std::size_t count, int covered, int w) {
+  while (covered < w) {
     const auto s = static_cast<std::size_t>(std::min(covered, w - covered));
     for (std::size_t i = 0; i + s < count; ++i) v[first + i] |= v[first + i + s];
     covered += static_cast<int>(s);
@@ -21,8 +22,8 @@ void spread(std::vector<std::uint8_t>& v, std::size_t first, std::size_t count, 
 }
 
 // The same in y over rows of `width` cells, row by row (the cells of a row are contiguous).
-void spread_rows(std::vector<std::uint8_t>& v, std::size_t width, std::size_t rows, int w) {
-  for (int covered = 1; covered < w;) {
+void spread_rows(std::vector<std::uint8_t>& v, std::size_t width, std::size_t rows, int covered, int w) {
+  while (covered < w) {
     const auto s = static_cast<std::size_t>(std::min(covered, w - covered));
     for (std::size_t y = 0; y + s < rows; ++y) {
       for (std::size_t x = 0; x < width; ++x) v[y * width + x] |= v[(y + s) * width + x];
@@ -34,8 +35,8 @@ void spread_rows(std::vector<std::uint8_t>& v, std::size_t width, std::size_t ro
 }  // namespace
 
 NearOccupiedField::NearOccupiedField(const EvidenceOctree& map, const std::vector<int>& bound_widths)
-    : grid_(map.grid().resolution()), bound_widths_(bound_widths) {
-  if (bound_widths_.size() > 8) throw std::invalid_argument("NearOccupiedField: at most 8 bound levels");
+    : grid_(map.grid().resolution()), inverse_(1.0 / map.grid().resolution()), bound_widths_(bound_widths) {
+  if (bound_widths_.size() > 7) throw std::invalid_argument("NearOccupiedField: at most 7 bound levels");
   for (std::size_t l = 0; l < bound_widths_.size(); ++l) {
     if (bound_widths_[l] < 1 || (l > 0 && bound_widths_[l] < bound_widths_[l - 1])) {
       throw std::invalid_argument("NearOccupiedField: bound width " + std::to_string(bound_widths_[l]) +
@@ -72,30 +73,34 @@ NearOccupiedField::NearOccupiedField(const EvidenceOctree& map, const std::vecto
     if (x < 0 || y < 0 || z < kLevelReach - 1 || x >= nx_ || y >= ny_ || z >= nz_ - (kLevelReach - 1)) return;
     bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 2;
   });
-  if (!bound_widths_.empty()) build_bounds();
+  build_levels();
 }
 
-// Each level's bit: the near-in-plane bits of one height slice copied to the padded box,
-// then spread over the w - 1 voxels after each in x and then in y.
-void NearOccupiedField::build_bounds() {
-  const long pad = bound_widths_.back() - 1;
+// Level 0's bit: the near-in-plane bits copied to the padded box. Each bound level's: those
+// of one height slice spread over the w - 1 voxels after each in x and then in y.
+void NearOccupiedField::build_levels() {
+  const long pad = bound_widths_.empty() ? 0 : bound_widths_.back() - 1;
   bx0_ = x0_ - pad, by0_ = y0_ - pad, bnx_ = nx_ + pad, bny_ = ny_ + pad;
   const auto plane_size = static_cast<std::size_t>(bnx_ * bny_);
-  bounds_.assign(plane_size * static_cast<std::size_t>(nz_), 0);
+  levels_.assign(plane_size * static_cast<std::size_t>(nz_), 0);
   std::vector<std::uint8_t> plane(plane_size);
   for (long z = 0; z < nz_; ++z) {
     const std::size_t slice = static_cast<std::size_t>(z) * plane_size;
-    for (std::size_t l = 0; l < bound_widths_.size(); ++l) {
-      std::fill(plane.begin(), plane.end(), 0);
-      for (long y = 0; y < ny_; ++y) {
-        for (long x = 0; x < nx_; ++x) {
-          plane[static_cast<std::size_t>((y + pad) * bnx_ + x + pad)] = (bits_at_key(x + x0_, y + y0_, z + z0_) >> 2) & 1u;
-        }
+    std::fill(plane.begin(), plane.end(), 0);
+    for (long y = 0; y < ny_; ++y) {
+      for (long x = 0; x < nx_; ++x) {
+        plane[static_cast<std::size_t>((y + pad) * bnx_ + x + pad)] = (bits_at_key(x + x0_, y + y0_, z + z0_) >> 2) & 1u;
       }
+    }
+    for (std::size_t i = 0; i < plane_size; ++i) levels_[slice + i] = plane[i];
+    // Widths grow with the level, so each level spreads the one below by what it lacks.
+    int covered = 1;
+    for (std::size_t l = 0; l < bound_widths_.size(); ++l) {
       const int w = bound_widths_[l];
-      for (long y = 0; y < bny_; ++y) spread(plane, static_cast<std::size_t>(y * bnx_), static_cast<std::size_t>(bnx_), w);
-      spread_rows(plane, static_cast<std::size_t>(bnx_), static_cast<std::size_t>(bny_), w);
-      for (std::size_t i = 0; i < plane_size; ++i) bounds_[slice + i] |= static_cast<std::uint8_t>(plane[i] << l);
+      for (long y = 0; y < bny_; ++y) spread(plane, static_cast<std::size_t>(y * bnx_), static_cast<std::size_t>(bnx_), covered, w);
+      spread_rows(plane, static_cast<std::size_t>(bnx_), static_cast<std::size_t>(bny_), covered, w);
+      covered = w;
+      for (std::size_t i = 0; i < plane_size; ++i) levels_[slice + i] |= static_cast<std::uint8_t>(plane[i] << (l + 1));
     }
   }
 }

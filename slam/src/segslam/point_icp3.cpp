@@ -3,6 +3,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -102,13 +103,41 @@ void IcpTarget3::for_each_near(const Eigen::Vector3d& q, F&& f) const {
   }
 }
 
+// The answer of a scan of the 27 cells in for_each_near's order keeping the last point with
+// d2 <= the best so far: the least d2 within max_distance, of equal ones the last in that
+// order (`rank`). Scanned from the query's own cell, which most often holds it, so the other
+// cells whose box lies beyond the best so far are skipped (with a margin far above rounding).
 long IcpTarget3::nearest(const Eigen::Vector3d& q) const {
-  long best = -1;
+  constexpr double kMargin = 1e-9;  // [m^2]
+  const long kx = cell_of(q.x()), ky = cell_of(q.y()), kz = cell_of(q.z());
+  // Squared distance from q to the faces of its cell below (index 0) and above (2) per axis.
+  const auto faces = [&](double v, long k) {
+    const double lo = v - static_cast<double>(k) * cell_, hi = static_cast<double>(k + 1) * cell_ - v;
+    return std::array<double, 3>{lo > 0 ? lo * lo : 0.0, 0.0, hi > 0 ? hi * hi : 0.0};
+  };
+  const std::array<double, 3> fx = faces(q.x(), kx), fy = faces(q.y(), ky), fz = faces(q.z(), kz);
+  long best = -1, best_rank = -1;
   double best_d2 = cell_ * cell_;
-  for_each_near(q, [&](long j) {
-    const double d2 = (points_[static_cast<std::size_t>(j)] - q).squaredNorm();
-    if (d2 <= best_d2) best_d2 = d2, best = j;
-  });
+  const auto scan = [&](int dx, int dy, int dz) {
+    const long x = kx + dx - x0_, y = ky + dy - y0_, z = kz + dz - z0_;
+    if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return;
+    if (fx[dx + 1] + fy[dy + 1] + fz[dz + 1] > best_d2 + kMargin) return;
+    const auto c = static_cast<std::size_t>((z * ny_ + y) * nx_ + x);
+    const long order = ((dx + 1) * 3 + (dy + 1)) * 3 + (dz + 1);
+    for (std::uint32_t k = first_[c]; k < first_[c + 1]; ++k) {
+      const double d2 = (points_[by_cell_[k]] - q).squaredNorm();
+      const long rank = order * static_cast<long>(points_.size()) + by_cell_[k];
+      if (d2 < best_d2 || (d2 == best_d2 && rank > best_rank)) best_d2 = d2, best = by_cell_[k], best_rank = rank;
+    }
+  };
+  scan(0, 0, 0);
+  for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dz = -1; dz <= 1; ++dz) {
+        if (dx != 0 || dy != 0 || dz != 0) scan(dx, dy, dz);
+      }
+    }
+  }
   return best;
 }
 

@@ -33,15 +33,20 @@ class NearOccupiedField {
   [[nodiscard]] Seen seen(const Eigen::Vector3d& p) const;
 
   [[nodiscard]] double resolution() const { return grid_.resolution(); }
-  /// The voxel key of a coordinate, as every test above computes it.
-  [[nodiscard]] long axis_key(double coordinate) const { return grid_.axis_key(coordinate); }
+  /// The voxel key of a coordinate: OctreeGrid::axis_key's value, with floor done by
+  /// truncation (no libm call in the coarse search's innermost loop).
+  [[nodiscard]] long axis_key(double coordinate) const {
+    const double v = coordinate * inverse_;
+    const auto i = static_cast<long>(v);
+    return i - (v < static_cast<double>(i) ? 1 : 0) + OctreeGrid::kCentre;
+  }
   /// Level 0: near_in_plane of voxel (kx, ky, kz). Level l >= 1: is any voxel of
   /// [kx, kx + w - 1] x [ky, ky + w - 1] at height kz near in the plane, w = bound_widths[l - 1]?
+  /// Every level is a bit of one table, so a block's levels share cache lines.
   [[nodiscard]] bool near_in_plane(std::size_t level, long kx, long ky, long kz) const {
-    if (level == 0) return (bits_at_key(kx, ky, kz) & 4) != 0;
     const long x = kx - bx0_, y = ky - by0_, z = kz - z0_;
     if (x < 0 || y < 0 || z < 0 || x >= bnx_ || y >= bny_ || z >= nz_) return false;
-    return (bounds_[static_cast<std::size_t>((z * bny_ + y) * bnx_ + x)] >> (level - 1)) & 1u;
+    return (levels_[static_cast<std::size_t>((z * bny_ + y) * bnx_ + x)] >> level) & 1u;
   }
   /// Bound levels above 0.
   [[nodiscard]] std::size_t bound_levels() const { return bound_widths_.size(); }
@@ -54,18 +59,19 @@ class NearOccupiedField {
     return bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)];
   }
   [[nodiscard]] std::uint8_t bits_at(const Eigen::Vector3d& p) const {
-    return bits_at_key(grid_.axis_key(p.x()), grid_.axis_key(p.y()), grid_.axis_key(p.z()));
+    return bits_at_key(axis_key(p.x()), axis_key(p.y()), axis_key(p.z()));
   }
-  void build_bounds();
+  void build_levels();
 
   OctreeGrid grid_{1.0};
+  double inverse_ = 1.0;  // 1 / resolution, as OctreeGrid computes it
   long x0_ = 0, y0_ = 0, z0_ = 0, nx_ = 0, ny_ = 0, nz_ = 0;
   std::vector<std::uint8_t> bits_;  // 1: near occupied, 2: observed, 4: near in the plane
-  // Bit l - 1 of a voxel: bound level l. The box reaches (widest - 1) voxels below the
-  // field's in x and y, where a block's first pose may put a point whose block reaches in.
+  // Bit l of a voxel: level l. The box reaches (widest - 1) voxels below the field's in x
+  // and y, where a block's first pose may put a point whose block reaches in.
   std::vector<int> bound_widths_;
   long bx0_ = 0, by0_ = 0, bnx_ = 0, bny_ = 0;
-  std::vector<std::uint8_t> bounds_;
+  std::vector<std::uint8_t> levels_;
 };
 
 }  // namespace lookahead::slam::segslam

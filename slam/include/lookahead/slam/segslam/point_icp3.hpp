@@ -8,7 +8,6 @@
 // along walls and floors.
 #pragma once
 
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -47,7 +46,12 @@ class IcpTarget3 {
   [[nodiscard]] const Eigen::Vector3d& normal(long i) const { return normals_[static_cast<std::size_t>(i)]; }
 
  private:
-  [[nodiscard]] long cell_of(double v) const { return std::lround(std::floor(v / cell_)); }
+  // floor(v / cell) by truncation: the same value as lround(floor(...)) without libm calls.
+  [[nodiscard]] long cell_of(double v) const {
+    const double c = v / cell_;
+    const auto i = static_cast<long>(c);
+    return i - (c < static_cast<double>(i) ? 1 : 0);
+  }
   void index_cells();
   template <class F>
   void for_each_near(const Eigen::Vector3d& q, F&& f) const;
