@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The SegSLAM 3D coarse search's branch and bound against its brute-force oracle (the
-// exhaustive search), its bound levels against their definition, and the ICP target's dense
-// cell index against a brute-force nearest neighbour: all shared per candidate, so matching
-// must give the same result from them as it did computing everything per attempt.
+// exhaustive search), and its bound levels (built once per candidate) against their
+// definition: matching must give the same result from them as the exhaustive search did.
 #include "lookahead/slam/segslam/level_coarse_search.hpp"
 
 #include <gtest/gtest.h>
@@ -99,29 +98,6 @@ TEST(NearOccupiedField, BoundLevelsHoldWhetherAnyVoxelOfTheirBoxIsNearInThePlane
   // Level 0 is the point test.
   const Eigen::Vector3d p = s.truth.position() + Eigen::Vector3d(1.3, -0.7, -0.4);
   EXPECT_EQ(field.near_in_plane(0, grid.axis_key(p.x()), grid.axis_key(p.y()), grid.axis_key(p.z())), field.near_in_plane(p));
-}
-
-TEST(PointIcp3, TheCellIndexFindsTheBruteForceNearestPoint) {
-  const Scene& s = scene();
-  const double reach = 0.5;
-  const IcpTarget3 target(s.window.cloud, reach);
-  std::mt19937_64 rng(5);
-  std::uniform_int_distribution<std::size_t> pick(0, s.window.cloud.size() - 1);
-  std::normal_distribution<double> jitter(0.0, 0.3);
-  int found = 0;
-  for (int k = 0; k < 2000; ++k) {
-    const Eigen::Vector3d q = s.window.cloud[pick(rng)] + Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
-    long best = -1;
-    double best_d2 = reach * reach;
-    for (std::size_t j = 0; j < target.size(); ++j) {
-      const double d2 = (target.point(static_cast<long>(j)) - q).squaredNorm();
-      if (d2 <= best_d2) best_d2 = d2, best = static_cast<long>(j);
-    }
-    ASSERT_EQ(target.nearest(q), best) << k;
-    found += best >= 0 ? 1 : 0;
-  }
-  EXPECT_GT(found, 1500);
-  EXPECT_EQ(target.nearest(s.window.cloud.front() + Eigen::Vector3d(0, 0, 100)), -1);  // beyond the box
 }
 
 }  // namespace
