@@ -19,8 +19,8 @@ namespace lookahead::slam::segslam {
 
 class NearOccupiedField {
  public:
-  /// The tables of `map`; `bound_widths` (increasing, each >= 2) adds the coarse search's
-  /// bound levels 1.. (near_in_plane(level, ...)).
+  /// The table of `map`; `bound_widths` (at most 5, not decreasing, each >= 1) adds the
+  /// coarse search's bound levels 1.. (near_in_plane(level, ...)).
   explicit NearOccupiedField(const EvidenceOctree& map, const std::vector<int>& bound_widths = {});
   [[nodiscard]] bool near(const Eigen::Vector3d& p) const;
   /// Within one voxel of an occupied one in x and y and kLevelReach voxels in z: the coarse
@@ -44,9 +44,7 @@ class NearOccupiedField {
   /// [kx, kx + w - 1] x [ky, ky + w - 1] at height kz near in the plane, w = bound_widths[l - 1]?
   /// Every level is a bit of one table, so a block's levels share cache lines.
   [[nodiscard]] bool near_in_plane(std::size_t level, long kx, long ky, long kz) const {
-    const long x = kx - bx0_, y = ky - by0_, z = kz - z0_;
-    if (x < 0 || y < 0 || z < 0 || x >= bnx_ || y >= bny_ || z >= nz_) return false;
-    return (levels_[static_cast<std::size_t>((z * bny_ + y) * bnx_ + x)] >> level) & 1u;
+    return (bits_at_key(kx, ky, kz) >> (kLevelShift + level)) & 1u;
   }
   /// Bound levels above 0.
   [[nodiscard]] std::size_t bound_levels() const { return bound_widths_.size(); }
@@ -61,17 +59,18 @@ class NearOccupiedField {
   [[nodiscard]] std::uint8_t bits_at(const Eigen::Vector3d& p) const {
     return bits_at_key(axis_key(p.x()), axis_key(p.y()), axis_key(p.z()));
   }
-  void build_levels();
+  void build_bounds();
+
+  // A voxel's bits: near an occupied voxel, observed, near in the plane (bound level 0), then
+  // bound levels 1.. .
+  static constexpr std::uint8_t kNear = 1, kObserved = 2, kNearInPlane = 4;
+  static constexpr int kLevelShift = 2;
 
   OctreeGrid grid_{1.0};
   double inverse_ = 1.0;  // 1 / resolution, as OctreeGrid computes it
-  long x0_ = 0, y0_ = 0, z0_ = 0, nx_ = 0, ny_ = 0, nz_ = 0;
-  std::vector<std::uint8_t> bits_;  // 1: near occupied, 2: observed, 4: near in the plane
-  // Bit l of a voxel: level l. The box reaches (widest - 1) voxels below the field's in x
-  // and y, where a block's first pose may put a point whose block reaches in.
   std::vector<int> bound_widths_;
-  long bx0_ = 0, by0_ = 0, bnx_ = 0, bny_ = 0;
-  std::vector<std::uint8_t> levels_;
+  long x0_ = 0, y0_ = 0, z0_ = 0, nx_ = 0, ny_ = 0, nz_ = 0;
+  std::vector<std::uint8_t> bits_;
 };
 
 }  // namespace lookahead::slam::segslam
