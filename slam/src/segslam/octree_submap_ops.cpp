@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "lookahead/slam/segslam/level_coarse_search.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
 
 namespace lookahead::slam::segslam {
@@ -36,36 +36,12 @@ bool explained(OctreeReader& reader, const OctreeGrid& grid, float occupied_abov
   return false;
 }
 
-double near_share(const NearOccupiedField& field, const Pose4& pose, const Points3& points) {
-  int near = 0;
-  for (const auto& p : points) near += field.near_in_plane(apply(pose, p)) ? 1 : 0;
+// The coarse search's grid: steps of 1.5 voxels miss no peak, as the near field reaches one
+// voxel around a surface; yaw in steps of 0.05 rad.
+LevelPoseGrid coarse_grid(const MatchingOptions& o) { return {o.search_radius, 1.5 * o.bin_size, o.search_angle, 0.05}; }
+
+double share(int near, const Points3& points) {
   return points.empty() ? 0.0 : static_cast<double>(near) / static_cast<double>(points.size());
-}
-
-struct CoarseBest {
-  Pose4 pose;
-  double score = 0.0;
-};
-
-// The best level pose on a grid around `guess` by the share of points near occupied voxels;
-// z stays the guess's (ICP corrects it on the floors).
-CoarseBest coarse_search(const NearOccupiedField& field, const Points3& points, const Pose4& guess,
-                         const MatchingOptions& o, double step) {
-  const int n = static_cast<int>(o.search_radius / step);
-  const double angle_step = 0.05;
-  const int na = static_cast<int>(o.search_angle / angle_step);
-  Pose4 best = guess;
-  double best_score = near_share(field, guess, points);
-  for (int a = -na; a <= na; ++a) {
-    for (int i = -n; i <= n; ++i) {
-      for (int j = -n; j <= n; ++j) {
-        const Pose4 p{guess.x + i * step, guess.y + j * step, guess.z, normalize_angle(guess.yaw + a * angle_step)};
-        const double v = near_share(field, p, points);
-        if (v > best_score) best_score = v, best = p;
-      }
-    }
-  }
-  return {best, best_score};
 }
 
 // Why a match fails its acceptance tests, or "" when it passes them.
@@ -107,55 +83,6 @@ bool has_observed_near(const EvidenceOctree& map, const Eigen::Vector3d& p, doub
   return false;
 }
 
-NearOccupiedField::NearOccupiedField(const EvidenceOctree& map) : resolution_(map.grid().resolution()) {
-  const auto above = static_cast<float>(map.options().occupied_above);
-  std::vector<OctreeKey> occupied;
-  map.for_each_voxel([&](const OctreeKey& k, float l) { if (l > above) occupied.push_back(k); });
-  if (occupied.empty()) return;
-  long x1 = 0, y1 = 0, z1 = 0;
-  x0_ = y0_ = z0_ = std::numeric_limits<long>::max();
-  for (const auto& k : occupied) {
-    x0_ = std::min<long>(x0_, k.x), y0_ = std::min<long>(y0_, k.y), z0_ = std::min<long>(z0_, k.z);
-    x1 = std::max<long>(x1, k.x), y1 = std::max<long>(y1, k.y), z1 = std::max<long>(z1, k.z);
-  }
-  x0_ -= 1, y0_ -= 1, z0_ -= kLevelReach;
-  nx_ = x1 - x0_ + 2, ny_ = y1 - y0_ + 2, nz_ = z1 - z0_ + 1 + kLevelReach;
-  bits_.assign(static_cast<std::size_t>(nx_ * ny_ * nz_), 0);
-  for (const auto& k : occupied) {
-    for (long dz = -kLevelReach; dz <= kLevelReach; ++dz) {
-      for (long dy = -1; dy <= 1; ++dy) {
-        for (long dx = -1; dx <= 1; ++dx) {
-          const long x = k.x - x0_ + dx, y = k.y - y0_ + dy, z = k.z - z0_ + dz;
-          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= std::abs(dz) <= 1 ? 5 : 4;
-        }
-      }
-    }
-  }
-  map.for_each_voxel([&](const OctreeKey& k, float) {
-    const long x = k.x - x0_, y = k.y - y0_, z = k.z - z0_;
-    // Observed voxels within one voxel of the occupied box only (the structure test's free
-    // space), however far the box is padded in z for near_in_plane.
-    if (x < 0 || y < 0 || z < kLevelReach - 1 || x >= nx_ || y >= ny_ || z >= nz_ - (kLevelReach - 1)) return;
-    bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= 2;
-  });
-}
-
-std::uint8_t NearOccupiedField::bits_at(const Eigen::Vector3d& p) const {
-  const OctreeGrid g(resolution_);
-  const long x = g.axis_key(p.x()) - x0_, y = g.axis_key(p.y()) - y0_, z = g.axis_key(p.z()) - z0_;
-  if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return 0;
-  return bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)];
-}
-
-bool NearOccupiedField::near(const Eigen::Vector3d& p) const { return (bits_at(p) & 1) != 0; }
-
-bool NearOccupiedField::near_in_plane(const Eigen::Vector3d& p) const { return (bits_at(p) & 4) != 0; }
-
-Seen NearOccupiedField::seen(const Eigen::Vector3d& p) const {
-  const std::uint8_t b = bits_at(p);
-  return (b & 1) != 0 ? Seen::kNearOccupied : (b & 2) != 0 ? Seen::kFree : Seen::kUnknown;
-}
-
 OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& o) {
   Points3 occupied;
   const auto above = static_cast<float>(map.options().occupied_above);
@@ -164,7 +91,8 @@ OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptio
   });
   IcpTarget3 icp(bin_points3(occupied, o.bin_size), o.icp_max_distance);
   IcpTarget3 structure(structure_points(icp).points, o.icp_max_distance);
-  return {NearOccupiedField(map), std::move(icp), std::move(structure)};
+  return {NearOccupiedField(map, level_bound_widths(coarse_grid(o).step, map.grid().resolution())), std::move(icp),
+          std::move(structure)};
 }
 
 SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, const MatchingOptions& o,
@@ -186,10 +114,9 @@ WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w,
   WindowMatch3 m;
   m.rejection = "too few points";
   if (target.icp.size() < 10 || w.cloud.size() < 10) return m;
-  // The near field reaches one voxel around a surface: steps of 1.5 voxels miss no peak.
-  const CoarseBest seed = coarse_search(target.field, w.scored, guess, o, 1.5 * o.bin_size);
-  m.guess_score = near_share(target.field, guess, w.scored);
-  m.coarse_score = seed.score;
+  const LevelCoarseResult seed = level_search_branch_and_bound(target.field, w.scored, guess, coarse_grid(o));
+  m.guess_score = share(near_in_plane_count(target.field, guess, w.scored), w.scored);
+  m.coarse_score = share(seed.score, w.scored);
   const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed.pose, {o.icp_iterations, o.icp_max_distance});
   m.pose = icp.transform;
   m.all_points_error = icp.mean_error;

@@ -2,20 +2,19 @@
 #include "lookahead/slam/segslam/point_icp3.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 namespace lookahead::slam::segslam {
 namespace {
 
 constexpr int kMinNormalNeighbours = 5;
-
-std::int64_t pack(long x, long y, long z) {
-  // 21 bits per axis: +-1e6 bins, far beyond any map here.
-  const auto u = [](long v) { return static_cast<std::int64_t>(v + (1L << 20)) & ((1LL << 21) - 1); };
-  return (u(x) << 42) | (u(y) << 21) | u(z);
-}
 
 Eigen::Vector3d apply(const Pose4& t, const Eigen::Vector3d& p) {
   const double c = std::cos(t.yaw), s = std::sin(t.yaw);
@@ -40,7 +39,7 @@ Points3 bin_points3(const Points3& points, double bin) {
 }
 
 IcpTarget3::IcpTarget3(Points3 points, double max_distance) : points_(std::move(points)), cell_(max_distance) {
-  for (std::size_t i = 0; i < points_.size(); ++i) cells_[cell_key(points_[i])].push_back(static_cast<long>(i));
+  index_cells();
   normals_.assign(points_.size(), Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < points_.size(); ++i) {
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -59,31 +58,86 @@ IcpTarget3::IcpTarget3(Points3 points, double max_distance) : points_(std::move(
   }
 }
 
-std::int64_t IcpTarget3::cell_key(const Eigen::Vector3d& p, int dx, int dy, int dz) const {
-  return pack(std::lround(std::floor(p.x() / cell_)) + dx, std::lround(std::floor(p.y() / cell_)) + dy,
-              std::lround(std::floor(p.z() / cell_)) + dz);
+// A counting sort of the points by cell: stable, so each cell lists its points in index order.
+void IcpTarget3::index_cells() {
+  if (points_.empty()) return;
+  long x1 = 0, y1 = 0, z1 = 0;
+  x0_ = y0_ = z0_ = std::numeric_limits<long>::max();
+  x1 = y1 = z1 = std::numeric_limits<long>::min();
+  for (const auto& p : points_) {
+    const long x = cell_of(p.x()), y = cell_of(p.y()), z = cell_of(p.z());
+    x0_ = std::min(x0_, x), y0_ = std::min(y0_, y), z0_ = std::min(z0_, z);
+    x1 = std::max(x1, x), y1 = std::max(y1, y), z1 = std::max(z1, z);
+  }
+  nx_ = x1 - x0_ + 1, ny_ = y1 - y0_ + 1, nz_ = z1 - z0_ + 1;
+  if (nx_ > kMaxCells / ny_ / nz_) {
+    throw std::invalid_argument("IcpTarget3: the cloud spans " + std::to_string(nx_) + " x " + std::to_string(ny_) +
+                                " x " + std::to_string(nz_) + " cells, more than " + std::to_string(kMaxCells));
+  }
+  const auto cell = [&](const Eigen::Vector3d& p) {
+    return static_cast<std::size_t>(((cell_of(p.z()) - z0_) * ny_ + (cell_of(p.y()) - y0_)) * nx_ + (cell_of(p.x()) - x0_));
+  };
+  first_.assign(static_cast<std::size_t>(nx_ * ny_ * nz_) + 1, 0);
+  for (const auto& p : points_) ++first_[cell(p) + 1];
+  for (std::size_t c = 1; c < first_.size(); ++c) first_[c] += first_[c - 1];
+  by_cell_.resize(points_.size());
+  std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
+  for (std::size_t i = 0; i < points_.size(); ++i) by_cell_[next[cell(points_[i])]++] = static_cast<std::uint32_t>(i);
 }
 
 template <class F>
 void IcpTarget3::for_each_near(const Eigen::Vector3d& q, F&& f) const {
-  for (int dx = -1; dx <= 1; ++dx) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dz = -1; dz <= 1; ++dz) {
-        const auto it = cells_.find(cell_key(q, dx, dy, dz));
-        if (it == cells_.end()) continue;
-        for (long j : it->second) f(j);
+  const long kx = cell_of(q.x()) - x0_, ky = cell_of(q.y()) - y0_, kz = cell_of(q.z()) - z0_;
+  // x outermost, z innermost: the order of the hash grid this replaced, so equally near
+  // points resolve as before and neighbour sums add up in the same order.
+  for (long x = kx - 1; x <= kx + 1; ++x) {
+    if (x < 0 || x >= nx_) continue;
+    for (long y = ky - 1; y <= ky + 1; ++y) {
+      if (y < 0 || y >= ny_) continue;
+      for (long z = kz - 1; z <= kz + 1; ++z) {
+        if (z < 0 || z >= nz_) continue;
+        const auto c = static_cast<std::size_t>((z * ny_ + y) * nx_ + x);
+        for (std::uint32_t k = first_[c]; k < first_[c + 1]; ++k) f(static_cast<long>(by_cell_[k]));
       }
     }
   }
 }
 
+// The answer of a scan of the 27 cells in for_each_near's order keeping the last point with
+// d2 <= the best so far: the least d2 within max_distance, of equal ones the last in that
+// order (`rank`). Scanned from the query's own cell, which most often holds it, so the other
+// cells whose box lies beyond the best so far are skipped (with a margin far above rounding).
 long IcpTarget3::nearest(const Eigen::Vector3d& q) const {
-  long best = -1;
+  constexpr double kMargin = 1e-9;  // [m^2]
+  const long kx = cell_of(q.x()), ky = cell_of(q.y()), kz = cell_of(q.z());
+  // Squared distance from q to the faces of its cell below (index 0) and above (2) per axis.
+  const auto faces = [&](double v, long k) {
+    const double lo = v - static_cast<double>(k) * cell_, hi = static_cast<double>(k + 1) * cell_ - v;
+    return std::array<double, 3>{lo > 0 ? lo * lo : 0.0, 0.0, hi > 0 ? hi * hi : 0.0};
+  };
+  const std::array<double, 3> fx = faces(q.x(), kx), fy = faces(q.y(), ky), fz = faces(q.z(), kz);
+  long best = -1, best_rank = -1;
   double best_d2 = cell_ * cell_;
-  for_each_near(q, [&](long j) {
-    const double d2 = (points_[static_cast<std::size_t>(j)] - q).squaredNorm();
-    if (d2 <= best_d2) best_d2 = d2, best = j;
-  });
+  const auto scan = [&](int dx, int dy, int dz) {
+    const long x = kx + dx - x0_, y = ky + dy - y0_, z = kz + dz - z0_;
+    if (x < 0 || y < 0 || z < 0 || x >= nx_ || y >= ny_ || z >= nz_) return;
+    if (fx[dx + 1] + fy[dy + 1] + fz[dz + 1] > best_d2 + kMargin) return;
+    const auto c = static_cast<std::size_t>((z * ny_ + y) * nx_ + x);
+    const long order = ((dx + 1) * 3 + (dy + 1)) * 3 + (dz + 1);
+    for (std::uint32_t k = first_[c]; k < first_[c + 1]; ++k) {
+      const double d2 = (points_[by_cell_[k]] - q).squaredNorm();
+      const long rank = order * static_cast<long>(points_.size()) + by_cell_[k];
+      if (d2 < best_d2 || (d2 == best_d2 && rank > best_rank)) best_d2 = d2, best = by_cell_[k], best_rank = rank;
+    }
+  };
+  scan(0, 0, 0);
+  for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dz = -1; dz <= 1; ++dz) {
+        if (dx != 0 || dy != 0 || dz != 0) scan(dx, dy, dz);
+      }
+    }
+  }
   return best;
 }
 

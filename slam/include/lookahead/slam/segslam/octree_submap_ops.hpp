@@ -16,6 +16,7 @@
 
 #include "lookahead/slam/geometry/pose4.hpp"
 #include "lookahead/slam/octree/evidence_octree.hpp"
+#include "lookahead/slam/segslam/near_occupied_field.hpp"
 #include "lookahead/slam/segslam/point_icp3.hpp"
 #include "lookahead/slam/segslam/segslam_options.hpp"
 #include "lookahead/slam/segslam/structure_fit.hpp"
@@ -45,32 +46,10 @@ double predictive_score(const EvidenceOctree& map, const Pose4& pose, const Swee
 /// Sec. 4.5.1 spatial proximity: does `map` hold observed voxels within `radius` of `p`?
 bool has_observed_near(const EvidenceOctree& map, const Eigen::Vector3d& p, double radius);
 
-/// Voxels within one voxel of an occupied one, and voxels the map has observed at all, as a
-/// dense bitmap over the map's occupied bounding box: O(1) tests for the coarse search and
-/// the structure test.
-class NearOccupiedField {
- public:
-  explicit NearOccupiedField(const EvidenceOctree& map);
-  [[nodiscard]] bool near(const Eigen::Vector3d& p) const;
-  /// Within one voxel of an occupied one in x and y and kLevelReach voxels in z: the coarse
-  /// search's test, which leaves z to ICP. The map sample's guess was 0.2-0.35 m off in
-  /// height at the garage loop's closure; with the 27-voxel test the floor and ceiling points
-  /// then missed at the right x, y and yaw, and the search found nothing (README).
-  [[nodiscard]] bool near_in_plane(const Eigen::Vector3d& p) const;
-  static constexpr long kLevelReach = 2;
-  /// Near an occupied voxel, else known (free), else unknown.
-  [[nodiscard]] Seen seen(const Eigen::Vector3d& p) const;
-
- private:
-  double resolution_ = 1.0;
-  long x0_ = 0, y0_ = 0, z0_ = 0, nx_ = 0, ny_ = 0, nz_ = 0;
-  [[nodiscard]] std::uint8_t bits_at(const Eigen::Vector3d& p) const;
-  std::vector<std::uint8_t> bits_;  // 1: near occupied, 2: observed, 4: near in the plane
-};
-
-/// What matching needs of a closed submap, built once per candidate.
+/// What matching needs of a closed submap, built once per candidate and shared by every
+/// particle and attempt (a closed submap never changes).
 struct OctreeMatchTarget {
-  NearOccupiedField field;
+  NearOccupiedField field;  ///< with the coarse search's bound levels
   IcpTarget3 icp;        ///< occupied voxel centres, binned
   IcpTarget3 structure;  ///< those of them whose surface is structure, normals of their own
 };

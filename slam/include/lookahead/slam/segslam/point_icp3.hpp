@@ -9,7 +9,6 @@
 #pragma once
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,27 +28,42 @@ struct Icp3Options {
   double max_distance = 0.4;  ///< correspondences farther than this are outliers [m]
 };
 
-/// A target cloud with its normals and a hash grid for nearest-neighbour queries.
+/// A target cloud with its normals and a grid of cells of max_distance for nearest-neighbour
+/// queries: a dense table over the cloud's bounding box (at most kMaxCells cells; sensor
+/// clouds here span tens of metres, 1e5-1e6 cells), so a query reads 27 cells without hashing.
 class IcpTarget3 {
  public:
+  static constexpr long kMaxCells = 1L << 27;
+  /// Throws std::invalid_argument when the cloud's box holds more than kMaxCells cells.
   IcpTarget3(Points3 points, double max_distance);
   [[nodiscard]] std::size_t size() const { return points_.size(); }
   [[nodiscard]] double max_distance() const { return cell_; }
-  /// The index of the target point nearest to `q` within max_distance, -1 when none.
+  /// The index of the target point nearest to `q` within max_distance, -1 when none (of
+  /// equally near ones the last in cell and index order).
   [[nodiscard]] long nearest(const Eigen::Vector3d& q) const;
   [[nodiscard]] const Eigen::Vector3d& point(long i) const { return points_[static_cast<std::size_t>(i)]; }
   /// Unit normal of point i; zero when its neighbourhood is too small to fit a plane.
   [[nodiscard]] const Eigen::Vector3d& normal(long i) const { return normals_[static_cast<std::size_t>(i)]; }
 
  private:
-  [[nodiscard]] std::int64_t cell_key(const Eigen::Vector3d& p, int dx = 0, int dy = 0, int dz = 0) const;
+  // floor(v / cell) by truncation: the same value as lround(floor(...)) without libm calls.
+  [[nodiscard]] long cell_of(double v) const {
+    const double c = v / cell_;
+    const auto i = static_cast<long>(c);
+    return i - (c < static_cast<double>(i) ? 1 : 0);
+  }
+  void index_cells();
   template <class F>
   void for_each_near(const Eigen::Vector3d& q, F&& f) const;
 
   Points3 points_;
   Points3 normals_;
   double cell_;
-  std::unordered_map<std::int64_t, std::vector<long>> cells_;
+  // Cell (x, y, z) of the box from (x0_, y0_, z0_) holds points first_[c] .. first_[c + 1] - 1
+  // of by_cell_ (indices, ascending within a cell).
+  long x0_ = 0, y0_ = 0, z0_ = 0, nx_ = 0, ny_ = 0, nz_ = 0;
+  std::vector<std::uint32_t> first_;
+  std::vector<std::uint32_t> by_cell_;
 };
 
 struct Icp3Result {

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// The SegSLAM 3D coarse search's branch and bound against its brute-force oracle (the
+// exhaustive search), and its bound levels (built once per candidate) against their
+// definition: matching must give the same result from them as the exhaustive search did.
+#include "lookahead/slam/segslam/level_coarse_search.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "lookahead/slam/octree/ray_insertion.hpp"
+#include "lookahead/slam/segslam/octree_submap_ops.hpp"
+#include "lookahead/slam/segslam/seg_slam3d.hpp"
+#include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
+
+namespace lookahead::slam::segslam {
+namespace {
+
+struct Scene {
+  EvidenceOctree map;   // sweeps 5-12 of a short garage drive, true poses
+  SweepWindow window;   // sweeps 8-11 in the true level frame of sweep 8
+  Pose4 truth;          // the robot at sweep 8
+};
+
+const Scene& scene() {
+  static const Scene s = [] {
+    World3 w = make_garage_world(1, 0.2);
+    w.route.resize(3);
+    const RangeLog3 log = simulate_cave_crawler(w, {}, 1);
+    Scene out;
+    for (std::size_t i = 5; i <= 12; ++i) {
+      std::vector<Ray3> rays;
+      const Pose3& t = *log.sweeps[i].truth;
+      for (const Ray3& r : log.sweeps[i].rays) rays.push_back({t * r.origin, t * r.end, r.hit});
+      insert_rays(out.map, rays, {});
+    }
+    out.truth = Pose4::level_of(*log.sweeps[8].truth);
+    const Pose3 to_start = out.truth.level_pose3().inverse();
+    Points3 all;
+    for (std::size_t i = 8; i <= 11; ++i) {
+      for (const Ray3& r : log.sweeps[i].rays) {
+        if (r.hit) all.push_back(to_start * (*log.sweeps[i].truth * r.end));
+      }
+    }
+    out.window = make_sweep_window(all, 300, segslam3d_defaults().matching);
+    return out;
+  }();
+  return s;
+}
+
+TEST(LevelCoarseSearch, BranchAndBoundReturnsTheExhaustivePoseBitForBit) {
+  const Scene& s = scene();
+  const LevelPoseGrid base{2.0, 0.3, 0.4, 0.05};
+  const NearOccupiedField field(s.map, level_bound_widths(base.step, s.map.grid().resolution()));
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> off(-4.0, 4.0), turn(-0.5, 0.5), lift(-0.3, 0.3);
+  int improved = 0;
+  for (int k = 0; k < 12; ++k) {
+    LevelPoseGrid g = base;
+    g.radius = k % 3 == 0 ? 4.5 : 2.0;
+    const Pose4 guess = s.truth.compose({off(rng), off(rng), lift(rng), turn(rng)});
+    const LevelCoarseResult e = level_search_exhaustive(field, s.window.scored, guess, g);
+    const LevelCoarseResult b = level_search_branch_and_bound(field, s.window.scored, guess, g);
+    EXPECT_EQ(b.score, e.score) << k;
+    EXPECT_EQ(b.pose.x, e.pose.x) << k;
+    EXPECT_EQ(b.pose.y, e.pose.y) << k;
+    EXPECT_EQ(b.pose.z, e.pose.z) << k;
+    EXPECT_EQ(b.pose.yaw, e.pose.yaw) << k;
+    improved += e.score > near_in_plane_count(field, guess, s.window.scored) ? 1 : 0;
+  }
+  EXPECT_GT(improved, 6);  // the searches did move off their guesses
+  // Without the bound levels the branch and bound cannot run: a clear error, no fallback.
+  const NearOccupiedField no_bounds(s.map);
+  EXPECT_THROW(level_search_branch_and_bound(no_bounds, s.window.scored, s.truth, base), std::invalid_argument);
+}
+
+TEST(NearOccupiedField, BoundLevelsHoldWhetherAnyVoxelOfTheirBoxIsNearInThePlane) {
+  const Scene& s = scene();
+  const std::vector<int> widths{4, 7, 13};
+  const NearOccupiedField field(s.map, widths);
+  const OctreeGrid& grid = s.map.grid();
+  const long cx = grid.axis_key(s.truth.x), cy = grid.axis_key(s.truth.y), cz = grid.axis_key(s.truth.z);
+  std::mt19937_64 rng(3);
+  std::uniform_int_distribution<long> d(-60, 60), dz(-12, 12);
+  int near = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const long x = cx + d(rng), y = cy + d(rng), z = cz + dz(rng);
+    for (std::size_t l = 1; l <= widths.size(); ++l) {
+      bool any = false;
+      for (long u = 0; u < widths[l - 1] && !any; ++u) {
+        for (long v = 0; v < widths[l - 1] && !any; ++v) any = field.near_in_plane(0, x + u, y + v, z);
+      }
+      ASSERT_EQ(field.near_in_plane(l, x, y, z), any) << "level " << l << " at " << x - cx << ", " << y - cy;
+      near += any ? 1 : 0;
+    }
+  }
+  EXPECT_GT(near, 1000);
+  // Level 0 is the point test.
+  const Eigen::Vector3d p = s.truth.position() + Eigen::Vector3d(1.3, -0.7, -0.4);
+  EXPECT_EQ(field.near_in_plane(0, grid.axis_key(p.x()), grid.axis_key(p.y()), grid.axis_key(p.z())), field.near_in_plane(p));
+}
+
+}  // namespace
+}  // namespace lookahead::slam::segslam
