@@ -28,7 +28,7 @@ struct ExploreArgs {
   std::optional<std::string> strategy;
   std::string config;  ///< mission YAML (config/mission/default.yaml documents every key)
   std::optional<std::string> pose;
-  std::uint64_t seed = 1;
+  std::optional<std::uint64_t> seed;  ///< unset: the config's mission.seed (a study's run_config.yaml replays)
   std::string out = "out/explore";
   std::optional<int> particles;
   std::optional<double> time_limit;
@@ -48,7 +48,7 @@ exploration::MissionOptions mission_options(const ExploreArgs& a) {
                                                   : exploration::load_mission_options(a.config);
   if (a.strategy) o.strategy = *a.strategy;
   if (a.predict) o.slam.prediction.enabled = true;  // P-SLAM weights; implies predictions
-  o.seed = a.seed;
+  if (a.seed) o.seed = *a.seed;
   if (a.particles) o.slam.particles = *a.particles;
   if (a.time_limit) o.time_limit = *a.time_limit;
   if (a.coverage_goal) o.coverage_goal = *a.coverage_goal;
@@ -66,12 +66,12 @@ exploration::MissionOptions mission_options(const ExploreArgs& a) {
 int run_explore(ExploreArgs a) {
   planner::set_ompl_log_level(planner::OmplLogLevel::kWarn);
   const exploration::MissionOptions options = mission_options(a);
-  a.world.seed = a.seed;
+  a.world.seed = options.seed;
   if (a.start.size() == 3) a.world.start = slam::Pose2{a.start[0], a.start[1], a.start[2]};
   const exploration::GeneratedWorld world = exploration::load_world(a.world, options.robot.radius);
   spdlog::info("world {}: {:.1f} m x {:.1f} m, start ({:.2f}, {:.2f}); strategy {}, pose {}, seed {}",
                a.world.name, world.world.width_m(), world.world.height_m(), world.start.x, world.start.y,
-               options.strategy, exploration::pose_source_name(options.pose_source), a.seed);
+               options.strategy, exploration::pose_source_name(options.pose_source), options.seed);
   std::filesystem::create_directories(a.out);
   exploration::Mission mission(world.world, world.start, options);
   if (a.log) mission.record_log(a.out + "/run.log");
@@ -116,7 +116,8 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--strategy", a->strategy, "nearest | utility | predictive | predictive-utility (P-SLAM: skip predicted frontiers)");
   app.add_flag("--predict", a->predict, "P-SLAM: predict at each target and use hypotheses in the particle weights");
   app.add_option("--pose", a->pose, "slam (RBPF in the loop) | truth (planner-only); default slam");
-  app.add_option("--seed", a->seed, "seed of the world, sensor, odometry, SLAM and planner")->capture_default_str();
+  app.add_option("--seed", a->seed,
+                 "seed of the world, sensor, odometry, SLAM and planner (overrides the config's mission.seed; default 1)");
   app.add_option("--particles", a->particles, "RBPF particles (default 30)");
   app.add_option("--time-limit", a->time_limit, "simulated seconds (default 1800)");
   app.add_option("--coverage-goal", a->coverage_goal, "stop at this share of the reachable area (default 0.95)");

@@ -127,6 +127,23 @@ TEST_F(Cli, PredictOnASavedMapWritesItsPictureAndFigures) {
   EXPECT_TRUE(r.code == 0 || r.code == 3) << r.output;  // the PGM finds its YAML beside it
 }
 
+TEST_F(Cli, ExploreKeepsTheConfigsSeedUnlessSeedIsGiven) {
+  // A study's run_config.yaml replays its run: its mission.seed must not be reset to 1.
+  const fs::path config = dir / "seed3.yaml";
+  std::ofstream(config) << "mission:\n  seed: 3\n";
+  const auto seed_of = [&](const std::string& extra) {
+    const fs::path out = dir / ("seed" + std::to_string(extra.size()));
+    const Result r = shell(bin + " explore --world maze --pose truth --time-limit 3 --no-animation --config " +
+                           config.string() + extra + " --out " + out.string());
+    EXPECT_EQ(r.code, 0) << r.output;
+    nlohmann::json j;
+    std::ifstream(out / "run.json") >> j;
+    return j["seed"].get<int>();
+  };
+  EXPECT_EQ(seed_of(""), 3);
+  EXPECT_EQ(seed_of(" --seed 2"), 2);
+}
+
 TEST_F(Cli, PredictRejectsMissingMapsAndBadTargets) {
   Result r = shell(bin + " predict " + (dir / "none.pgm").string() + " --target 1,2");
   EXPECT_EQ(r.code, 2) << r.output;
