@@ -74,6 +74,10 @@ TEST(MissionConfig, BadEnumValueNamesTheValue) {
   EXPECT_EQ(e.line(), 3u);
   EXPECT_EQ(e.field(), "planner.algorithm");
   EXPECT_EQ(e.value(), "rrt");
+  e = parse_error("mission:\n  strategy: utility\n  gain_line_of_sight: visible\n");
+  EXPECT_EQ(e.line(), 3u);
+  EXPECT_EQ(e.field(), "mission.gain_line_of_sight");
+  EXPECT_EQ(e.value(), "visible");
   e = parse_error("laser:\n  max_range: far\n");
   EXPECT_EQ(e.field(), "laser.max_range");
   EXPECT_EQ(e.value(), "far");
