@@ -27,6 +27,18 @@ bool GoalBlacklist::contains(double x, double y, double now) const {
   });
 }
 
+std::size_t GoalBlacklist::forgive_permanent() {
+  std::size_t forgiven = 0;
+  for (Spot& spot : spots_) {
+    if (spot.strikes < options_.max_strikes) continue;
+    spot.strikes = 0;
+    ++forgiven;
+  }
+  entries_.erase(std::remove_if(entries_.begin(), entries_.end(), [](const Entry& e) { return std::isinf(e.expires); }),
+                 entries_.end());
+  return forgiven;
+}
+
 std::size_t GoalBlacklist::expire(double now) {
   entries_.erase(std::remove_if(entries_.begin(), entries_.end(), [&](const Entry& e) { return e.expires <= now; }),
                  entries_.end());

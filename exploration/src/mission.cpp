@@ -76,6 +76,7 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
   }
   if (options_.pose_source == PoseSource::kSlam) rbpf_ = std::make_unique<slam::Rbpf>(options_.slam);
   last_refresh_pose_ = start;
+  progress_along_path_ = options_.progress_along_path;
 }
 
 Mission::~Mission() = default;
@@ -260,7 +261,7 @@ bool Mission::need_new_path() {
   // a wall led away from the goal for the whole 30 s (1.5 m away, 13.5 m of path left).
   // The path left is the measure there; its best is kept across replans, so a robot that
   // swaps between routes without shortening either is still stuck.
-  const double left = options_.progress_along_path ? follower_->remaining_length() : INFINITY;
+  const double left = progress_along_path_ ? follower_->remaining_length() : INFINITY;
   if (d < best_goal_distance_ - kProgressStep || left < best_path_left_ - kProgressStep) {
     best_goal_distance_ = std::min(d, best_goal_distance_);
     best_path_left_ = std::min(left, best_path_left_);
@@ -366,6 +367,7 @@ void Mission::select_new_target() {
     const bool unreachable = s.outcome == SelectionOutcome::kUnreachable;
     if (++unreachable_streak_ >= kOrdinaryTries) {
       if (unreachable && last_resort()) return;
+      if (second_chance()) return;
       status_ = MissionStatus::kTrapped;
       return;
     }
@@ -385,7 +387,7 @@ void Mission::follow(const Selection& s, const planner::FollowerOptions& trackin
   follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
   const slam::Pose2 p = estimate();
   best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);  // the stuck clock starts
-  best_path_left_ = options_.progress_along_path ? planner::path_length(s.path) : INFINITY;
+  best_path_left_ = progress_along_path_ ? planner::path_length(s.path) : INFINITY;
   last_progress_time_ = time_;
   progress_path_length_ = path_length_;
   next_goal_check_ = time_ + options_.goal_check_period;

@@ -2,7 +2,8 @@
 // The ways out when the costmap (body + safety margin) has no way on: a backtrack along the
 // robot's own trail; a squeeze through a door the margin closes (planned on the map inflated
 // by the body alone) when the margin closes the way to the current goal, and as the last
-// resort before the mission is called trapped.
+// resort before the mission is called trapped; and, before that call, a second chance for
+// the goals blacklisted for good.
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -46,6 +47,29 @@ bool Mission::last_resort() {
   ++last_resorts_;
   const bool squeeze_first = last_resorts_ % 2 == 1;
   return squeeze_first ? (squeeze() || backtrack()) : (backtrack() || squeeze());
+}
+
+bool Mission::second_chance() {
+  // The third time the stuck clock gives a goal up, it is blacklisted for good. The clock
+  // measures progress as the straight line to the goal shrinking, and a long way round
+  // (a ring corridor, a hall entered from its far side) can lead away from the goal for
+  // more than stuck_time: on kth_50010540 (seed 3, utility) the last two frontiers were
+  // given up three times each while the robot was driving to them, and the mission ended
+  // trapped at 33 % coverage. Before calling a mission trapped, those goals get their
+  // strikes back once, and from then on a shorter path left counts as progress too. Only
+  // here, so a mission that is never trapped is unchanged (progress along the path from
+  // the start makes nearest worse on kth_50015848: 79 % against 91.5 % at the 4 h guard).
+  if (second_chance_used_) return false;
+  second_chance_used_ = true;
+  const std::size_t forgiven = blacklist_.forgive_permanent();
+  if (forgiven == 0) return false;
+  stats_.forgiven_goals += static_cast<int>(forgiven);
+  progress_along_path_ = true;
+  unreachable_streak_ = 0;
+  last_resorts_ = 0;
+  spdlog::debug("t {:.1f}: trapped by the blacklist: {} goal(s) get a second chance", time_, forgiven);
+  turned_ = 0.0;  // look around, then choose among the forgiven goals
+  return true;
 }
 
 planner::Costmap Mission::body_costmap() const {

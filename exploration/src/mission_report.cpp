@@ -120,7 +120,7 @@ std::string to_json(const MissionSummary& s) {
   j["collisions"] = s.statistics.collisions;
   j["planner"] = {{"selections", s.statistics.selections}, {"plans", s.statistics.plans},
                   {"failures", s.statistics.plan_failures}, {"replans", s.statistics.replans},
-                  {"stuck_goals", s.statistics.stuck_goals}, {"grid_fallbacks", s.statistics.grid_fallbacks}, {"planning_time_s", s.statistics.planning_time}};
+                  {"stuck_goals", s.statistics.stuck_goals}, {"forgiven_goals", s.statistics.forgiven_goals}, {"grid_fallbacks", s.statistics.grid_fallbacks}, {"planning_time_s", s.statistics.planning_time}};
   j["safety_stops"] = s.statistics.safety_stops;
   j["backtracks"] = s.statistics.backtracks;
   j["squeezes"] = s.statistics.squeezes;

@@ -184,5 +184,22 @@ TEST(GoalBlacklist, TheThirdStrikeLastsForGood) {
   EXPECT_FALSE(b.add(3.0, 1.0, 40.0));
 }
 
+// The second chance before "trapped": spots blacklisted for good get all their strikes back;
+// entries that only wait to expire stay.
+TEST(GoalBlacklist, ForgivingGivesPermanentSpotsTheirStrikesBack) {
+  GoalBlacklist b({0.5, 10.0, 2});
+  b.add(1.0, 1.0, 0.0);
+  EXPECT_TRUE(b.add(1.0, 1.0, 20.0));  // for good
+  b.add(3.0, 1.0, 25.0);               // one strike, expires at 35
+  EXPECT_EQ(b.forgive_permanent(), 1u);
+  EXPECT_FALSE(b.permanent(1.0, 1.0));
+  EXPECT_FALSE(b.contains(1.0, 1.0, 30.0));
+  EXPECT_TRUE(b.contains(3.0, 1.0, 30.0));
+  EXPECT_FALSE(b.add(1.0, 1.0, 40.0));  // the count starts again
+  EXPECT_TRUE(b.add(3.0, 1.0, 40.0));   // the other spot kept its strike
+  EXPECT_EQ(b.forgive_permanent(), 1u);
+  EXPECT_EQ(b.forgive_permanent(), 0u);
+}
+
 }  // namespace
 }  // namespace lookahead::exploration

@@ -25,6 +25,9 @@ class GoalBlacklist {
   [[nodiscard]] bool contains(double x, double y, double now) const;
   /// (x, y) is blacklisted for good: waiting for its entry to expire is pointless.
   [[nodiscard]] bool permanent(double x, double y) const;
+  /// Gives every spot blacklisted for good its strikes back (its entries are dropped);
+  /// returns how many spots were forgiven.
+  std::size_t forgive_permanent();
   /// Drops expired entries; returns how many remain.
   std::size_t expire(double now);
   [[nodiscard]] std::size_t size() const { return entries_.size(); }

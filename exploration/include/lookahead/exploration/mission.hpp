@@ -47,6 +47,7 @@ struct MissionStatistics {
   int backtracks = 0;    ///< escapes along the robot's own trail (no frontier was reachable)
   int squeezes = 0;      ///< paths planned without the safety margin
   int blocked_squeezes = 0;  ///< of those, to a goal whose way the margin had closed
+  int forgiven_goals = 0;    ///< goals blacklisted for good, retried before "trapped"
   std::size_t retired_frontier_cells = 0;  ///< frontier cells that outlived a visit
   std::size_t scans = 0, map_refreshes = 0;
   bool ended_on_predictions = false;  ///< done because every frontier left was predicted
@@ -107,6 +108,7 @@ class Mission {
   bool backtrack();  ///< follows the trail out of a place with no reachable frontier
   bool squeeze();    ///< plans to a frontier on the map inflated by the body alone
   bool last_resort();  ///< squeeze or backtrack, alternating, before the mission is trapped
+  bool second_chance();  ///< once: goals blacklisted for good are retried, progress along the path
   bool squeeze_to_goal();  ///< the current goal on the map inflated by the body alone
   planner::Costmap body_costmap() const;  ///< the map inflated by the body, no safety margin
   planner::FollowerOptions close_tracking() const;  ///< for paths that fit only where drawn
@@ -151,6 +153,10 @@ class Mission {
   double best_goal_distance_ = 0.0, best_path_left_ = 0.0, last_progress_time_ = 0.0, progress_path_length_ = 0.0;
   int unreachable_streak_ = 0;
   int last_resorts_ = 0;  ///< squeezes and backtracks since the ordinary tries ran out
+  /// The stuck clock counts a shorter path left as progress (options_.progress_along_path,
+  /// or since the second chance).
+  bool progress_along_path_ = false;
+  bool second_chance_used_ = false;
   bool map_changed_ = false;
   bool path_blocked_ = false;  ///< the follower was dropped because new walls block its path
   int stop_streak_ = 0;        ///< consecutive steps the reactive stop has held the robot
