@@ -40,8 +40,6 @@ constexpr double kSameGoalRadius = 1.0;
 // around) before the last resort (mission_escapes.cpp).
 constexpr int kOrdinaryTries = 3;
 
-// The stuck clock restarts when the robot gets this much closer to its goal [m].
-constexpr double kProgressStep = 0.2;
 
 MissionOptions checked(MissionOptions o) {
   o.validate();
@@ -65,6 +63,7 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       frontiers_(options.frontiers),
       blacklist_(options.blacklist),
       replan_failures_(options.blacklist),
+      stuck_clock_({options.stuck_time, options.progress_along_path, options.detour_progress}),
       strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)),
       // A spot is the same target within 1 m (the goal shifts as the map grows, as kSameGoalRadius);
       // strikes never make an entry permanent: the map keeps growing around it.
@@ -76,7 +75,6 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
   }
   if (options_.pose_source == PoseSource::kSlam) rbpf_ = std::make_unique<slam::Rbpf>(options_.slam);
   last_refresh_pose_ = start;
-  progress_along_path_ = options_.progress_along_path;
 }
 
 Mission::~Mission() = default;
@@ -258,21 +256,13 @@ bool Mission::need_new_path() {
   const slam::Pose2 p = estimate();
   const double d = std::hypot(goal_->x - p.x, goal_->y - p.y);
   // On kth_50015848 most goals the stuck clock gave up were being driven to: a path around
-  // a wall led away from the goal for the whole 30 s (1.5 m away, 13.5 m of path left).
-  // The path left is the measure there; its best is kept across replans, so a robot that
-  // swaps between routes without shortening either is still stuck.
-  const double left = progress_along_path_ ? follower_->remaining_length() : INFINITY;
-  if (d < best_goal_distance_ - kProgressStep || left < best_path_left_ - kProgressStep) {
-    best_goal_distance_ = std::min(d, best_goal_distance_);
-    best_path_left_ = std::min(left, best_path_left_);
-    last_progress_time_ = time_;
-    progress_path_length_ = path_length_;
-  }
-  if (time_ - last_progress_time_ > options_.stuck_time) {
+  // a wall led away from the goal for the whole 30 s (stuck_clock.hpp).
+  if (stuck_clock_.stuck(time_, d, follower_->remaining_length(), path_length_)) {
     spdlog::debug("t {:.1f}: stuck on ({:.2f}, {:.2f}): {:.2f} m away, {:.2f} m of path left, {:.2f} m driven since "
                   "the last progress{}{}",
-                  time_, goal_->x, goal_->y, d, follower_->remaining_length(), path_length_ - progress_path_length_,
-                  squeezing_ ? ", squeezing" : "", backtracking_ ? ", backtracking" : "");
+                  time_, goal_->x, goal_->y, d, follower_->remaining_length(),
+                  stuck_clock_.driven_since_progress(path_length_), squeezing_ ? ", squeezing" : "",
+                  backtracking_ ? ", backtracking" : "");
     blacklist_.add(goal_->x, goal_->y, time_);
     ++stats_.stuck_goals;
     return true;
@@ -386,10 +376,7 @@ void Mission::follow(const Selection& s, const planner::FollowerOptions& trackin
   goal_ = planner::Point2{s.goal_x, s.goal_y};
   follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
   const slam::Pose2 p = estimate();
-  best_goal_distance_ = std::hypot(s.goal_x - p.x, s.goal_y - p.y);  // the stuck clock starts
-  best_path_left_ = progress_along_path_ ? planner::path_length(s.path) : INFINITY;
-  last_progress_time_ = time_;
-  progress_path_length_ = path_length_;
+  stuck_clock_.start(time_, std::hypot(s.goal_x - p.x, s.goal_y - p.y), planner::path_length(s.path), path_length_);
   next_goal_check_ = time_ + options_.goal_check_period;
 }
 

@@ -30,6 +30,7 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v("goal_check_period", o.goal_check_period, "the current goal is re-examined this often [s]");
   v("stuck_time", o.stuck_time, "no progress this long blacklists the goal [s]");
   v("progress_along_path", o.progress_along_path, "a shorter path left to the goal is progress too");
+  v("detour_progress", o.detour_progress, "on a detour (path > 10 m and > 2x the distance) too");
   v("max_goal_attempts", o.max_goal_attempts, "candidates tried per selection before trapped");
   v("metrics_period", o.metrics_period, "coverage is sampled this often [s]");
   v("frame_period", o.frame_period, "animation frame every [s]; 0 = no animation");

@@ -64,7 +64,7 @@ bool Mission::second_chance() {
   const std::size_t forgiven = blacklist_.forgive_permanent();
   if (forgiven == 0) return false;
   stats_.forgiven_goals += static_cast<int>(forgiven);
-  progress_along_path_ = true;
+  stuck_clock_.count_path_always();
   unreachable_streak_ = 0;
   last_resorts_ = 0;
   spdlog::debug("t {:.1f}: trapped by the blacklist: {} goal(s) get a second chance", time_, forgiven);

@@ -18,6 +18,7 @@
 #include "lookahead/exploration/lookahead_mapping.hpp"
 #include "lookahead/exploration/mission_metrics.hpp"
 #include "lookahead/exploration/mission_options.hpp"
+#include "lookahead/exploration/stuck_clock.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
 #include "lookahead/exploration/world.hpp"
@@ -129,6 +130,7 @@ class Mission {
   FrontierDetector frontiers_;
   GoalBlacklist blacklist_;
   GoalBlacklist replan_failures_;  ///< goals given up once because no replan reached them
+  StuckClock stuck_clock_;  ///< gives the current goal up when the robot makes no progress
   std::unique_ptr<TargetStrategy> strategy_;
   std::unique_ptr<LookaheadMapping> lookahead_;
   GoalBlacklist predicted_targets_;  ///< frontier goals predicted lately (predict_while_idle)
@@ -150,12 +152,8 @@ class Mission {
   MissionStatistics stats_;
   double time_ = 0.0, path_length_ = 0.0, turned_ = 0.0;
   double next_goal_check_ = 0.0, next_metrics_ = 0.0;
-  double best_goal_distance_ = 0.0, best_path_left_ = 0.0, last_progress_time_ = 0.0, progress_path_length_ = 0.0;
   int unreachable_streak_ = 0;
   int last_resorts_ = 0;  ///< squeezes and backtracks since the ordinary tries ran out
-  /// The stuck clock counts a shorter path left as progress (options_.progress_along_path,
-  /// or since the second chance).
-  bool progress_along_path_ = false;
   bool second_chance_used_ = false;
   bool map_changed_ = false;
   bool path_blocked_ = false;  ///< the follower was dropped because new walls block its path
