@@ -85,7 +85,7 @@ def main(out, base, rules):
         total = sum(use.values()) or 1.0
         shares = " / ".join(f"{100 * use[k] / total:.0f}" for k in ("0 %", "1-49 %", "50-99 %", "dropped"))
         anyway = f"{ever / len(seeds):.0f} m^2, {100 * (ever - left) / ever:.0f} %" if ever else "-"
-        print(f"| {rule} | {st.mean(t):.0f} +- {st.stdev(t):.0f} | {100 * (st.mean(t) / st.mean(tb) - 1):+.1f} % (p = {p:.2f}) "
+        print(f"| {rule} | {st.mean(t):.0f} +- {st.stdev(t):.0f} | {100 * (st.mean(t) / st.mean(tb) - 1):+.1f} % (p = {p:.3f}) "
               f"| {st.mean(r[s]['coverage'] for s in seeds):.3f} | {st.mean(wp):.3f}, {min(wp):.3f} | {st.mean(acc):.3f}, {min(acc):.3f} "
               f"| {anyway} | {shares} % |")
 
