@@ -6,7 +6,7 @@ left neither explored nor predicted: nearest's full exploration reaches 0.973-0.
 predictor's cell accuracy, the look-ahead area explored anyway, and the time per goal by
 how much of the goal's far side was predicted when it was chosen (from the debug logs; under
 the region rule a frontier counts 0 % or 100 %, so its goals all fall under 0 % or dropped).
-Usage: summarize_maze_skips.py OUT BASE RULE..."""
+Usage: summarize_maze_skips.py OUT BASE RULE...   (SEEDS="1 2 ... 10" reads other seeds than 1-5)"""
 import json
 import os
 import re
@@ -17,9 +17,9 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from summarize_runs import welch  # noqa: E402
 
 
-def runs(folder):
+def runs(folder, seeds=range(1, 6)):
     out = {}
-    for s in range(1, 6):
+    for s in seeds:
         path = os.path.join(folder, str(s), "run.json")
         if os.path.exists(path):
             with open(path) as f:
@@ -59,14 +59,15 @@ def time_by_share(log):
 
 
 def main(out, base, rules):
-    b = runs(os.path.join(out, base))
+    seeds = [int(x) for x in os.environ.get("SEEDS", "1 2 3 4 5").split()]
+    b = runs(os.path.join(out, base), seeds)
     tb = [b[s]["simulated_time_s"] for s in sorted(b)]
     print(f"{base}: {len(tb)} runs, {st.mean(tb):.1f} +- {st.stdev(tb):.1f} s, explored "
           f"{min(b[s]['coverage'] for s in b):.3f}-{max(b[s]['coverage'] for s in b):.3f}\n")
     print("| rule | time [s] | vs " + base + " | explored | explored + predicted: mean, worst seed | cells right: mean, worst | predicted inside, explored anyway | goal time at 0 / 1-49 / 50-99 % predicted, dropped |")
     print("|---|---|---|---|---|---|---|---|")
     for rule in rules:
-        r = runs(os.path.join(out, rule))
+        r = runs(os.path.join(out, rule), seeds)
         seeds = sorted(r)
         if not seeds:
             continue
@@ -85,7 +86,7 @@ def main(out, base, rules):
         total = sum(use.values()) or 1.0
         shares = " / ".join(f"{100 * use[k] / total:.0f}" for k in ("0 %", "1-49 %", "50-99 %", "dropped"))
         anyway = f"{ever / len(seeds):.0f} m^2, {100 * (ever - left) / ever:.0f} %" if ever else "-"
-        print(f"| {rule} | {st.mean(t):.0f} +- {st.stdev(t):.0f} | {100 * (st.mean(t) / st.mean(tb) - 1):+.1f} % (p = {p:.2f}) "
+        print(f"| {rule} | {st.mean(t):.0f} +- {st.stdev(t):.0f} | {100 * (st.mean(t) / st.mean(tb) - 1):+.1f} % (p = {p:.3f}) "
               f"| {st.mean(r[s]['coverage'] for s in seeds):.3f} | {st.mean(wp):.3f}, {min(wp):.3f} | {st.mean(acc):.3f}, {min(acc):.3f} "
               f"| {anyway} | {shares} % |")
 

@@ -146,8 +146,14 @@ void Mission::deliver_prediction() {
   if (rbpf_) rbpf_->add_hypothesis(std::move(h));  // ignored unless prediction is on
 }
 
+GoalDistance Mission::prediction_order(const std::vector<FrontierCluster>& clusters) const {
+  if (!options_.lookahead.targets_by_path) return straight_line_from(estimate());
+  return path_cost_from(costmap_, estimate(), clusters);
+}
+
 std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x, double goal_y) {
-  const TargetList targets = selection_targets(frontiers_.clusters(map()), goal_x, goal_y, estimate(),
+  const std::vector<FrontierCluster> clusters = frontiers_.clusters(map());
+  const TargetList targets = selection_targets(clusters, goal_x, goal_y, prediction_order(clusters),
                                                options_.lookahead.targets_per_selection);
   for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
   return targets;
@@ -159,9 +165,10 @@ void Mission::predict_while_idle() {
   next_idle_prediction_ = time_ + options_.lookahead.latency;  // clusters() is not free
   predicted_targets_.expire(time_);
   const slam::OccupancyGrid& m = map();
+  const std::vector<FrontierCluster> clusters = frontiers_.clusters(m);
   const TargetList targets = unpredicted_frontier_targets(
-      frontiers_.clusters(m), m, lookahead_->predicted(), options_.lookahead.skip_rule(), options_.lookahead.skip_share,
-      predicted_targets_, time_, estimate(), options_.lookahead.targets_per_selection);
+      clusters, m, lookahead_->predicted(), options_.lookahead.skip_rule(), options_.lookahead.skip_share,
+      predicted_targets_, time_, prediction_order(clusters), options_.lookahead.targets_per_selection);
   if (targets.empty()) return;
   for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
   lookahead_->request(m, targets, time_);

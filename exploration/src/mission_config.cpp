@@ -74,6 +74,7 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
   v("targets_per_selection", o.targets_per_selection, "frontiers predicted per selection: the target, then the nearest");
   v("predict_while_idle", o.predict_while_idle, "an idle predictor predicts the nearest frontiers not covered yet");
   v("repredict_after", o.repredict_after, "... a frontier again after this long [s, simulated]");
+  v("targets_by_path", o.targets_by_path, "predicted targets nearest by path cost, as nearest chooses (false: straight line)");
   v("pictures", o.pictures,
     "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");
   v("surroundings_diameter", o.predictor.surroundings_diameter, "d: surroundings S_f and prediction range [m]");

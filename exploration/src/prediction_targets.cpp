@@ -3,18 +3,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+
+#include "lookahead/exploration/target_selection.hpp"
+#include "lookahead/exploration/travel_cost.hpp"
 
 namespace lookahead::exploration {
 
 namespace {
 
-// The clusters' goals passing `keep`, nearest to the robot first.
+// The clusters' goals passing `keep`, nearest by `distance` first; goals with no way there
+// (infinite distance) are no possible exploration goal and are left out.
 template <typename Keep>
 std::vector<const FrontierCluster*> nearest_first(const std::vector<FrontierCluster>& clusters,
-                                                  const slam::Pose2& robot, const Keep& keep) {
+                                                  const GoalDistance& distance, const Keep& keep) {
   std::vector<std::pair<double, const FrontierCluster*>> goals;
-  for (const FrontierCluster& f : clusters)
-    if (f.has_goal && keep(f)) goals.push_back({std::hypot(f.goal_x - robot.x, f.goal_y - robot.y), &f});
+  for (const FrontierCluster& f : clusters) {
+    if (!f.has_goal || !keep(f)) continue;
+    const double d = distance(f);
+    if (std::isfinite(d)) goals.push_back({d, &f});
+  }
   std::sort(goals.begin(), goals.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<const FrontierCluster*> out;
   for (const auto& g : goals) out.push_back(g.second);
@@ -23,11 +31,38 @@ std::vector<const FrontierCluster*> nearest_first(const std::vector<FrontierClus
 
 }  // namespace
 
+GoalDistance straight_line_from(const slam::Pose2& robot) {
+  return [robot](const FrontierCluster& f) { return std::hypot(f.goal_x - robot.x, f.goal_y - robot.y); };
+}
+
+GoalDistance path_cost_from(const planner::Costmap& costmap, const slam::Pose2& robot,
+                            const std::vector<FrontierCluster>& clusters) {
+  // The same start cell and search as select_target's pricing, so that both agree on which
+  // goal is next (the robot may stand in an inflated cell right after a turn near a wall).
+  const std::optional<planner::Point2> start = nearest_free(costmap, robot.x, robot.y, 0.5);
+  if (!start) return [](const FrontierCluster&) { return TravelCost::kInfinity; };
+  std::vector<slam::CellIndex> goals;
+  for (const FrontierCluster& f : clusters)
+    if (f.has_goal) goals.push_back(costmap.cell_at({f.goal_x, f.goal_y}));
+  const slam::CellIndex lo = costmap.origin();
+  const slam::CellIndex hi{lo.x + costmap.width() - 1, lo.y + costmap.height() - 1};
+  const auto cost = std::make_shared<const TravelCost>(
+      lo, hi, costmap.resolution(), costmap.cell_at(*start),
+      [&costmap](slam::CellIndex c) { return costmap.cell_is_free(c); }, goals);
+  const planner::Costmap* cm = &costmap;
+  return [cost, cm](const FrontierCluster& f) { return cost->at(cm->cell_at({f.goal_x, f.goal_y})); };
+}
+
 TargetList selection_targets(const std::vector<FrontierCluster>& clusters, double goal_x, double goal_y,
                              const slam::Pose2& robot, int count) {
+  return selection_targets(clusters, goal_x, goal_y, straight_line_from(robot), count);
+}
+
+TargetList selection_targets(const std::vector<FrontierCluster>& clusters, double goal_x, double goal_y,
+                             const GoalDistance& distance, int count) {
   TargetList targets{{goal_x, goal_y}};
   const auto other = [&](const FrontierCluster& f) { return std::hypot(f.goal_x - goal_x, f.goal_y - goal_y) >= 1.0; };
-  for (const FrontierCluster* f : nearest_first(clusters, robot, other)) {
+  for (const FrontierCluster* f : nearest_first(clusters, distance, other)) {
     if (static_cast<int>(targets.size()) >= count) break;
     targets.push_back({f->goal_x, f->goal_y});
   }
@@ -37,9 +72,17 @@ TargetList selection_targets(const std::vector<FrontierCluster>& clusters, doubl
 TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
                                         const PredictedMap& predicted, const SkipRule& rule, double skip_share,
                                         const GoalBlacklist& tried, double now, const slam::Pose2& robot, int count) {
+  return unpredicted_frontier_targets(clusters, map, predicted, rule, skip_share, tried, now, straight_line_from(robot),
+                                      count);
+}
+
+TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
+                                        const PredictedMap& predicted, const SkipRule& rule, double skip_share,
+                                        const GoalBlacklist& tried, double now, const GoalDistance& distance,
+                                        int count) {
   TargetList targets;
   const auto open = [&](const FrontierCluster& f) { return !tried.contains(f.goal_x, f.goal_y, now); };
-  for (const FrontierCluster* f : nearest_first(clusters, robot, open)) {
+  for (const FrontierCluster* f : nearest_first(clusters, distance, open)) {
     if (static_cast<int>(targets.size()) >= count) break;
     // Checked after the cheap tests: under the region rule this is a flood fill.
     if (predicted.covered_share(map, *f, rule) >= skip_share) continue;

@@ -4,10 +4,13 @@
 // cover and that were not tried lately (and again once the memory of a try expires).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "lookahead/exploration/generated_worlds.hpp"
 #include "lookahead/exploration/mission.hpp"
 #include "lookahead/exploration/mission_report.hpp"
 #include "lookahead/exploration/prediction_targets.hpp"
+#include "hand_made_grid.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -62,6 +65,60 @@ TEST(PredictionTargets, AnIdlePredictorTakesTheNearestFrontiersNeitherCoveredNor
   t = unpredicted_frontier_targets(clusters, map, predicted, rule, 1.0, tried, 11.0, robot, 1);
   ASSERT_EQ(t.size(), 1u);  // the try expired: the nearest open one again, one at most
   EXPECT_DOUBLE_EQ(t[0].first, clusters[1].goal_x);
+}
+
+// A 4 m x 3 m walled room at 5 cm cells; an inner wall at y = 1 m runs from the left wall
+// to x = 3 m. The robot at (0.5, 0.5); goal A at (0.5, 1.5) is 1 m away in a straight line
+// but over 5 m round the wall's end; goal B at (2.5, 0.5) is 2 m away either way; goal C
+// at (-1, 0.5) lies outside the room, where no path leads.
+struct WalledRoom {
+  slam::OccupancyGrid map;
+  planner::Costmap costmap;
+  std::vector<FrontierCluster> clusters{goal_at(0.5, 1.5), goal_at(2.5, 0.5), goal_at(-1.0, 0.5)};
+  slam::Pose2 robot{0.5, 0.5, 0.0};
+  WalledRoom() {
+    testing::add_rect(map, 0, 0, 79, 59, 3 * map.fixed_miss());
+    testing::add_rect(map, -1, -1, 80, -1, 6 * map.fixed_hit());
+    testing::add_rect(map, -1, 60, 80, 60, 6 * map.fixed_hit());
+    testing::add_rect(map, -1, -1, -1, 60, 6 * map.fixed_hit());
+    testing::add_rect(map, 80, -1, 80, 60, 6 * map.fixed_hit());
+    testing::add_rect(map, 0, 20, 59, 20, 9 * map.fixed_hit());
+    planner::CostmapOptions o;
+    o.robot_radius = 0.1;
+    costmap = planner::Costmap(map, o);
+  }
+};
+
+TEST(PredictionTargets, PathCostGoesRoundWallsAndLeavesUnreachableGoalsOut) {
+  const WalledRoom room;
+  const GoalDistance path = path_cost_from(room.costmap, room.robot, room.clusters);
+  EXPECT_GT(path(room.clusters[0]), 5.0);  // round the wall's end, not 1 m through it
+  EXPECT_NEAR(path(room.clusters[1]), 2.0, 0.1);
+  EXPECT_FALSE(std::isfinite(path(room.clusters[2])));
+  EXPECT_NEAR(straight_line_from(room.robot)(room.clusters[0]), 1.0, 1e-9);
+}
+
+TEST(PredictionTargets, TargetsByPathAreTheGoalsTheNearestStrategyWouldTakeNext) {
+  const WalledRoom room;
+  // In a straight line A, B, C; by path B, A, and C (unreachable) not at all.
+  TargetList t = selection_targets(room.clusters, 3.5, 2.5, room.robot, 4);
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_EQ(t[1], std::make_pair(0.5, 1.5));
+  t = selection_targets(room.clusters, 3.5, 2.5, path_cost_from(room.costmap, room.robot, room.clusters), 4);
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[0], std::make_pair(3.5, 2.5));  // the chosen goal first
+  EXPECT_EQ(t[1], std::make_pair(2.5, 0.5));
+  EXPECT_EQ(t[2], std::make_pair(0.5, 1.5));
+  const PredictedMap nothing_predicted;
+  const GoalBlacklist tried({1.0, 10.0, 1000});
+  t = unpredicted_frontier_targets(room.clusters, room.map, nothing_predicted, SkipRule{}, 1.0, tried, 0.0,
+                                   path_cost_from(room.costmap, room.robot, room.clusters), 1);
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0], std::make_pair(2.5, 0.5));
+  t = unpredicted_frontier_targets(room.clusters, room.map, nothing_predicted, SkipRule{}, 1.0, tried, 0.0,
+                                   room.robot, 1);
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0], std::make_pair(0.5, 1.5));
 }
 
 TEST(PredictionTargets, AMissionPredictingWhileIdleMakesMoreRequests) {

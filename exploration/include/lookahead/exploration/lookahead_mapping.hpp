@@ -63,6 +63,11 @@ struct LookaheadOptions {
   /// one, and a selection that knows which are predicted can leave them out.
   bool predict_while_idle = false;
   double repredict_after = 10.0;  ///< [s, simulated]
+  /// Opt-in: the "nearest" frontiers predicted (at a selection, and while idle) are the
+  /// nearest by the travel cost the nearest strategy chooses by, not in a straight line;
+  /// frontiers the robot cannot reach are not predicted. Costs one Dijkstra search per
+  /// request.
+  bool targets_by_path = false;
   /// Keep the map and the prediction of every hypothesis and write one picture each into
   /// the run folder (predictions/NNN.png, with the true walls of the target region): for
   /// finding out why a hypothesis scored low against the world. Costs memory; off by default.

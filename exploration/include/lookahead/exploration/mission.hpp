@@ -18,6 +18,7 @@
 #include "lookahead/exploration/lookahead_mapping.hpp"
 #include "lookahead/exploration/mission_metrics.hpp"
 #include "lookahead/exploration/mission_options.hpp"
+#include "lookahead/exploration/prediction_targets.hpp"
 #include "lookahead/exploration/stuck_clock.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
@@ -94,6 +95,8 @@ class Mission {
   void deliver_prediction();
   std::vector<std::pair<double, double>> prediction_targets(double goal_x, double goal_y);
   void predict_while_idle();  ///< LookaheadOptions::predict_while_idle
+  /// Which frontier goals are nearest for the prediction targets (LookaheadOptions::targets_by_path).
+  [[nodiscard]] GoalDistance prediction_order(const std::vector<FrontierCluster>& clusters) const;
   void refresh();
   void decide();
   bool need_new_path();

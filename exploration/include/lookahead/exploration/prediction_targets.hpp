@@ -7,22 +7,41 @@
 // selection already knows which frontiers are predicted.
 #pragma once
 
+#include <functional>
 #include <utility>
 #include <vector>
 
 #include "lookahead/exploration/frontier_detector.hpp"
 #include "lookahead/exploration/goal_blacklist.hpp"
 #include "lookahead/exploration/predicted_map.hpp"
+#include "lookahead/planner/costmap.hpp"
 #include "lookahead/slam/geometry/pose2.hpp"
 
 namespace lookahead::exploration {
 
 using TargetList = std::vector<std::pair<double, double>>;
 
+/// How far the robot is from a frontier's goal [m]; infinity: no way there.
+using GoalDistance = std::function<double(const FrontierCluster&)>;
+
+/// The straight-line distance from `robot` (the default order of the targets).
+GoalDistance straight_line_from(const slam::Pose2& robot);
+
+/// The travel cost from `robot` over the costmap's free cells (the Dijkstra price the
+/// nearest strategy chooses by), one search for the goals of `clusters`; infinity for goals
+/// the robot cannot reach. The paper's target is "the next possible exploration goal"
+/// (sec. II-A): the explorer takes goals by path cost, and in a maze the straight line runs
+/// through pillars, so the nearest goals in a straight line are often not the next ones.
+GoalDistance path_cost_from(const planner::Costmap& costmap, const slam::Pose2& robot,
+                            const std::vector<FrontierCluster>& clusters);
+
 /// The chosen goal first, then the other frontier goals (more than 1 m from it) nearest to
 /// `robot` first, `count` in all.
 TargetList selection_targets(const std::vector<FrontierCluster>& clusters, double goal_x, double goal_y,
                              const slam::Pose2& robot, int count);
+/// The same, nearest by `distance` first; goals at infinite distance are left out.
+TargetList selection_targets(const std::vector<FrontierCluster>& clusters, double goal_x, double goal_y,
+                             const GoalDistance& distance, int count);
 
 /// Frontier goals worth a prediction while the predictor has nothing to do: not covered by
 /// the look-ahead map under `rule` (covered_share below `skip_share`) and not predicted
@@ -32,5 +51,10 @@ TargetList selection_targets(const std::vector<FrontierCluster>& clusters, doubl
 TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
                                         const PredictedMap& predicted, const SkipRule& rule, double skip_share,
                                         const GoalBlacklist& tried, double now, const slam::Pose2& robot, int count);
+/// The same, nearest by `distance` first; goals at infinite distance are left out.
+TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
+                                        const PredictedMap& predicted, const SkipRule& rule, double skip_share,
+                                        const GoalBlacklist& tried, double now, const GoalDistance& distance,
+                                        int count);
 
 }  // namespace lookahead::exploration
