@@ -12,7 +12,7 @@ namespace lookahead::exploration {
 struct StuckClockOptions {
   double stuck_time = 30.0;  ///< no progress this long: stuck [s]
   bool along_path = false;   ///< a shorter path left is progress, detour or not
-  bool on_detours = true;    ///< a shorter path left is progress on a detour
+  bool on_detours = false;   ///< a shorter path left is progress on a detour
 };
 
 class StuckClock {
