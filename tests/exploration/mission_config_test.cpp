@@ -78,6 +78,10 @@ TEST(MissionConfig, BadEnumValueNamesTheValue) {
   EXPECT_EQ(e.line(), 3u);
   EXPECT_EQ(e.field(), "mission.gain_line_of_sight");
   EXPECT_EQ(e.value(), "visible");
+  e = parse_error("mission:\n  detour_progress: sometimes\n");
+  EXPECT_EQ(e.line(), 2u);
+  EXPECT_EQ(e.field(), "mission.detour_progress");
+  EXPECT_EQ(e.value(), "sometimes");
   e = parse_error("laser:\n  max_range: far\n");
   EXPECT_EQ(e.field(), "laser.max_range");
   EXPECT_EQ(e.value(), "far");
