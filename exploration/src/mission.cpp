@@ -40,7 +40,6 @@ constexpr double kSameGoalRadius = 1.0;
 // around) before the last resort (mission_escapes.cpp).
 constexpr int kOrdinaryTries = 3;
 
-
 MissionOptions checked(MissionOptions o) {
   o.validate();
   // The predictive strategy and a filter that uses hypotheses both need predictions made.

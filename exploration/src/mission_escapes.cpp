@@ -55,8 +55,9 @@ bool Mission::second_chance() {
   // (a ring corridor, a hall entered from its far side) can lead away from the goal for
   // more than stuck_time: on kth_50010540 (seed 3, utility) the last two frontiers were
   // given up three times each while the robot was driving to them, and the mission ended
-  // trapped at 33 % coverage. Before calling a mission trapped, those goals get their
-  // strikes back once, and from then on a shorter path left counts as progress too. Only
+  // trapped at 33 % coverage. Before calling a mission trapped, the goals blacklisted for
+  // good (by the stuck clock, or reached with their frontier left) get their strikes back
+  // once, and from then on a shorter path left counts as progress too. Only
   // here, so a mission that is never trapped is unchanged (progress along the path from
   // the start makes nearest worse on kth_50015848: 79 % against 91.5 % at the 4 h guard).
   if (second_chance_used_) return false;
