@@ -27,6 +27,7 @@ struct ExploreArgs {
   // Unset options keep MissionOptions::defaults(): the one place defaults live.
   std::optional<std::string> strategy;
   std::string config;  ///< mission YAML (config/mission/default.yaml documents every key)
+  std::string robot;   ///< robot YAML (config/robot/): robot, laser and odometry, over the config
   std::optional<std::string> pose;
   std::optional<std::uint64_t> seed;  ///< unset: the config's mission.seed (a study's run_config.yaml replays)
   std::string out = "out/explore";
@@ -46,6 +47,8 @@ struct ExploreArgs {
 exploration::MissionOptions mission_options(const ExploreArgs& a) {
   exploration::MissionOptions o = a.config.empty() ? exploration::MissionOptions::defaults()
                                                   : exploration::load_mission_options(a.config);
+  // A robot file is a partial mission file: its sections replace the config's.
+  if (!a.robot.empty()) o = exploration::load_mission_options(a.robot, o);
   if (a.strategy) o.strategy = *a.strategy;
   if (a.predict) o.slam.prediction.enabled = true;  // P-SLAM weights; implies predictions
   if (a.seed) o.seed = *a.seed;
@@ -105,6 +108,7 @@ int run_explore(ExploreArgs a) {
 Run add_explore_command(CLI::App& app) {
   auto a = std::make_shared<ExploreArgs>();
   app.add_option("--config", a->config, "mission options YAML (see config/mission/default.yaml)");
+  app.add_option("--robot", a->robot, "robot YAML: body, laser, odometry (config/robot/pioneer3dx.yaml, p2explore.yaml)");
   app.add_option("--world", a->world.name, "office | maze | corridor | map .yaml | Stage .world | image")->capture_default_str();
   app.add_option("--resolution", a->world.image_resolution, "m/pixel of a plain image world")->capture_default_str();
   app.add_option("--pixel-rule", a->world.pixel_rule, "stage | only_white (plain images)")->capture_default_str();

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -127,6 +128,30 @@ TEST(MissionConfig, ShippedDefaultsMatchTheCode) {
       << "regenerate config/mission/default.yaml from "
          "dump_mission_options(MissionOptions::defaults())";
   EXPECT_NO_THROW(load_mission_options(path));
+}
+
+// config/robot/pioneer3dx.yaml is the default robot: loading it changes nothing.
+TEST(MissionConfig, PioneerRobotFileIsTheDefaultRobot) {
+  const std::string path = std::string(LOOKAHEAD_SOURCE_DIR) + "/config/robot/pioneer3dx.yaml";
+  const MissionOptions o = load_mission_options(path);
+  EXPECT_EQ(dump_mission_options(o), dump_mission_options(MissionOptions::defaults()));
+  EXPECT_DOUBLE_EQ(o.robot.radius, 0.25);
+  EXPECT_DOUBLE_EQ(o.laser.max_range, 8.0);
+}
+
+// config/robot/p2explore.yaml is the KTH studies' robot, laid over any mission file.
+TEST(MissionConfig, P2ExploreRobotFileIsTheStudiesRobot) {
+  MissionOptions base = MissionOptions::defaults();
+  base.strategy = "utility";
+  const MissionOptions o =
+      load_mission_options(std::string(LOOKAHEAD_SOURCE_DIR) + "/config/robot/p2explore.yaml", base);
+  EXPECT_EQ(o.strategy, "utility");  // what the robot file leaves out stays
+  EXPECT_DOUBLE_EQ(o.robot.radius, 0.1);
+  EXPECT_DOUBLE_EQ(o.robot.max_speed, 0.2);
+  EXPECT_NEAR(o.laser.fov, 2.0 * M_PI, 1e-6);
+  EXPECT_DOUBLE_EQ(o.laser.max_range, 12.0);
+  EXPECT_DOUBLE_EQ(o.slam.likelihood.max_range, 12.0);            // harmonized
+  EXPECT_DOUBLE_EQ(o.planner.costmap.robot_radius, 0.1 + o.safety_margin);  // harmonized
 }
 
 }  // namespace
