@@ -47,7 +47,7 @@ struct ExploreArgs {
 exploration::MissionOptions mission_options(const ExploreArgs& a) {
   exploration::MissionOptions o = a.config.empty() ? exploration::MissionOptions::defaults()
                                                   : exploration::load_mission_options(a.config);
-  // A robot file is a partial mission file: its sections replace the config's.
+  // A robot file is a partial mission file: the keys it names override the config.
   if (!a.robot.empty()) o = exploration::load_mission_options(a.robot, o);
   if (a.strategy) o.strategy = *a.strategy;
   if (a.predict) o.slam.prediction.enabled = true;  // P-SLAM weights; implies predictions
