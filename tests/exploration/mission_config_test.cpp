@@ -139,6 +139,21 @@ TEST(MissionConfig, PioneerRobotFileIsTheDefaultRobot) {
   EXPECT_DOUBLE_EQ(o.laser.max_range, 8.0);
 }
 
+// A robot file with garbage in it is refused with its path, the line and the value.
+TEST(MissionConfig, GarbageRobotFileNamesPathLineAndValue) {
+  const std::string path = ::testing::TempDir() + "garbage_robot.yaml";
+  std::ofstream(path) << "robot:\n  radius: 0.2\n  max_speed: fast\n";
+  try {
+    load_mission_options(path, MissionOptions::defaults());
+    FAIL() << "garbage accepted";
+  } catch (const slam::ParseError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "robot.max_speed");
+    EXPECT_EQ(e.value(), "fast");
+  }
+}
+
 // config/robot/p2explore.yaml is the KTH studies' robot, laid over any mission file.
 TEST(MissionConfig, P2ExploreRobotFileIsTheStudiesRobot) {
   MissionOptions base = MissionOptions::defaults();
