@@ -4,7 +4,7 @@
 
 #include "commands.hpp"
 #include "lookahead/exploration/mission_config.hpp"
-#include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/predictor/pslam_config.hpp"
 
 namespace lookahead::app {
 
@@ -20,11 +20,11 @@ Run add_config_command(CLI::App& app) {
       return 0;
     }
     if (!check->empty()) {
-      slam::load_rbpf_options(*check);
+      predictor::load_pslam_options(*check);
       fmt::print("{}: ok\n", *check);
       return 0;
     }
-    fmt::print("# lookahead SLAM defaults (lookahead config --dump)\n{}", slam::dump_rbpf_options({}));
+    fmt::print("{}", predictor::dump_pslam_options({}));
     return 0;
   };
 }

@@ -11,7 +11,6 @@
 
 #include "commands.hpp"
 #include "lookahead/predictor/slam_lookahead.hpp"
-#include "lookahead/slam/config/slam_config.hpp"
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/map_io.hpp"
@@ -21,6 +20,8 @@
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
 #include "slam_segslam.hpp"
+#include "lookahead/predictor/pslam_config.hpp"
+#include "lookahead/slam/config/slam_config.hpp"
 #include "slam_hybrid.hpp"
 
 namespace lookahead::app {
@@ -46,8 +47,7 @@ struct SlamArgs {
 };
 
 slam::RbpfOptions options_from(const SlamArgs& a) {
-  slam::RbpfOptions o;
-  if (!a.config.empty()) o = slam::load_rbpf_options(a.config);
+  slam::RbpfOptions o = predictor::load_pslam_options(a.config).rbpf;
   if (a.particles >= 0) o.particles = a.particles;
   if (a.seed >= 0) o.seed = static_cast<std::uint64_t>(a.seed);
   if (a.threads >= 0) o.threads = a.threads;
@@ -55,15 +55,23 @@ slam::RbpfOptions options_from(const SlamArgs& a) {
   return o;
 }
 
-nlohmann::json prediction_json(const slam::RbpfStatistics& st, const predictor::SlamLookaheadStatistics& p) {
+nlohmann::json prediction_json(const slam::RbpfStatistics& st, const predictor::SlamLookaheadStatistics& p,
+                               const predictor::LogPredictionOptions& options) {
+  nlohmann::json records = nlohmann::json::array();
+  for (const auto& r : p.records) {
+    records.push_back({{"update", r.update}, {"x", r.x}, {"y", r.y}, {"status", predictor::to_string(r.status)},
+                       {"psi", r.psi}, {"conflict_share", r.conflict_share}, {"predicted_area_m2", r.predicted_area}});
+  }
   return {{"requests", p.requests}, {"hypotheses", p.hypotheses}, {"no_control_point", p.no_control_point},
           {"no_match", p.no_match}, {"prediction_wall_time_s", p.seconds},
           {"predicted_updates", st.predicted_updates}, {"used", st.prediction_used},
-          {"rejected_by_hit_ratio", st.prediction_rejected}};
+          {"rejected_by_hit_ratio", st.prediction_rejected}, {"records", records},
+          {"options_yaml", predictor::dump_log_prediction_options(options)}};
 }
 
 void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbpf& filter,
-                   double wall_s, const predictor::SlamLookahead* lookahead) {
+                   double wall_s, const predictor::SlamLookahead* lookahead,
+                   const predictor::LogPredictionOptions& prediction) {
   std::filesystem::create_directories(a.out);
   const auto& best = filter.particles()[filter.best_particle()];
   const slam::ProbabilityMap map = slam::to_probability_map(best.map);
@@ -100,7 +108,7 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   j["map_entropy_nats"] = h.total;
   j["map_observed_cells"] = h.observed;
   j["parameters_yaml"] = slam::dump_rbpf_options(filter.options());
-  if (lookahead) j["prediction"] = prediction_json(st, lookahead->statistics());
+  if (lookahead) j["prediction"] = prediction_json(st, lookahead->statistics(), prediction);
   std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
 }
 
@@ -121,8 +129,12 @@ int run_slam(const SlamArgs& a) {
                log.scans.front().ranges.size(), options.particles);
   slam::Rbpf filter(options);
   // P-SLAM: predictions of the region ahead enter the weights (off: plain RBPF, bit for bit).
+  const predictor::LogPredictionOptions prediction =
+      a.method == "hybrid" ? predictor::LogPredictionOptions{} : predictor::load_pslam_options(a.config).prediction;
   std::unique_ptr<predictor::SlamLookahead> lookahead;
-  if (options.prediction.enabled) lookahead = std::make_unique<predictor::SlamLookahead>(predictor::PredictorOptions{}, predictor::SlamLookaheadOptions{});
+  if (options.prediction.enabled) {
+    lookahead = std::make_unique<predictor::SlamLookahead>(prediction.predictor, prediction.targets);
+  }
   ProgressBar bar("slam", log.scans.size());
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < log.scans.size(); ++i) {
@@ -132,7 +144,7 @@ int run_slam(const SlamArgs& a) {
   }
   bar.finish();
   const double wall = seconds_since(start);
-  write_outputs(a, log, filter, wall, lookahead.get());
+  write_outputs(a, log, filter, wall, lookahead.get(), prediction);
   spdlog::info("done in {:.1f} s ({:.1f}x real time), peak {:.0f} MB; wrote {}/map.png", wall,
                (log.scans.back().timestamp - log.scans.front().timestamp) / wall,
                peak_memory_mb(), a.out);

@@ -31,7 +31,8 @@ log=../shared/data/fr101/fr101.carmen.log
 REPS=${REPS:-4}
 for rep in $(seq 1 "$REPS"); do  # alternating, so both see the same load
   for mode in plain predict; do
-    flag=""; [ "$mode" = predict ] && flag="--predict"
+    # Live mode: the filter must not wait for predictions (a replay would wait by default).
+    flag=""; [ "$mode" = predict ] && flag="--predict --config config/slam/pslam_live.yaml"
     ./build/lookahead slam "$log" --particles 30 $flag --out "$out/fr101_${mode}_$rep" > /dev/null 2>&1
   done
 done

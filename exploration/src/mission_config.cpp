@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lookahead/predictor/predictor_keys.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
 #include "lookahead/slam/config/yaml_sections.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
@@ -77,15 +78,7 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
   v("targets_by_path", o.targets_by_path, "predicted targets nearest by path cost, as nearest chooses (false: straight line)");
   v("pictures", o.pictures,
     "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");
-  v("surroundings_diameter", o.predictor.surroundings_diameter, "d: surroundings S_f and prediction range [m]");
-  v("control_point_range", o.predictor.control_point_range, "control point: nearest corner within [m]");
-  v("similarity_threshold", o.predictor.similarity_threshold, "Psi for a hypothesis, 0.4..0.7");
-  v("similarity_resolution", o.predictor.similarity_resolution, "Psi is measured on cells of [m]");
-  v("similarity_tolerance_cells", o.predictor.similarity_tolerance_cells, "walls this many Psi cells apart overlap");
-  v("max_reference_corners", o.predictor.max_reference_corners, "search bound: reference corners tried");
-  v("min_reference_distance", o.predictor.min_reference_distance, "reference corners at least this far from P1 [m]");
-  v("min_predicted_area", o.predictor.min_predicted_area, "a hypothesis predicts at least [m^2]");
-  v("max_conflict_share", o.predictor.max_conflict_share, "alignments with more walls on known free cells are rejected");
+  predictor::visit_predictor_keys(o.predictor, v);
 }
 
 template <typename V>

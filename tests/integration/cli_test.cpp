@@ -158,7 +158,14 @@ TEST_F(Cli, SlamWithPredictReportsItsPredictions) {
   std::ifstream in(dir / "run.json");
   const nlohmann::json j = nlohmann::json::parse(in);
   ASSERT_TRUE(j.contains("prediction"));
-  EXPECT_GT(j["prediction"]["requests"].get<int>(), 0);
+  const auto& p = j["prediction"];
+  EXPECT_GT(p["requests"].get<int>(), 0);
+  // A replay waits for its predictions by default: every request but the last one in
+  // flight reaches the filter, each with its best Psi recorded.
+  EXPECT_GE(p["records"].size() + 1, p["requests"].get<std::size_t>());
+  EXPECT_EQ(p["records"].size(), static_cast<std::size_t>(p["hypotheses"].get<int>() + p["no_match"].get<int>() +
+                                                          p["no_control_point"].get<int>()));
+  EXPECT_NE(p["options_yaml"].get<std::string>().find("wait_for_predictions: true"), std::string::npos);
 }
 
 }  // namespace

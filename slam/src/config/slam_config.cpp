@@ -68,16 +68,24 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v("max_hypotheses", o.prediction.max_hypotheses, "hypotheses kept at once (oldest dropped)");
 }
 
+// A visitor that only collects the section names.
+struct SectionNames {
+  std::set<std::string> names;
+  void section(const char* name) { names.insert(name); }
+  template <typename T>
+  void operator()(const char* /*key*/, const T& /*field*/, const char* /*doc*/) {}
+};
+
 }  // namespace
 
 RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& source,
-                               const RbpfOptions& base) {
+                               const RbpfOptions& base, const std::set<std::string>& other_sections) {
   const YAML::Node root = config::parse_sections(yaml, source);
   RbpfOptions o = base;
   if (root.IsNull()) return o;
   config::SectionLoader loader(root, source);
   visit_sections(o, loader);
-  loader.reject_unknown();
+  loader.reject_unknown(other_sections);
   try {
     const Rbpf check(o);  // the components validate their own options; no particles yet
   } catch (const std::invalid_argument& e) {
@@ -88,6 +96,13 @@ RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& sourc
 
 RbpfOptions load_rbpf_options(const std::string& path, const RbpfOptions& base) {
   return parse_rbpf_options(config::read_text_file(path), path, base);
+}
+
+std::set<std::string> rbpf_section_names() {
+  SectionNames names;
+  RbpfOptions o;
+  visit_sections(o, names);
+  return names.names;
 }
 
 std::string dump_rbpf_options(const RbpfOptions& options) {

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: MIT
+#include "lookahead/predictor/pslam_config.hpp"
+
+#include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/slam/config/yaml_sections.hpp"
+
+namespace lookahead::predictor {
+
+PslamOptions load_pslam_options(const std::string& path) {
+  PslamOptions f;
+  if (path.empty()) return f;
+  const std::string text = slam::config::read_text_file(path);
+  f.rbpf = slam::parse_rbpf_options(text, path, {}, log_prediction_section_names());
+  f.prediction = parse_log_prediction_options(text, path, {}, slam::rbpf_section_names());
+  return f;
+}
+
+std::string dump_pslam_options(const PslamOptions& options) {
+  return "# lookahead SLAM defaults (lookahead config --dump)\n" + slam::dump_rbpf_options(options.rbpf) +
+         "# P-SLAM on a log (lookahead slam --predict): the predictor and its targets\n" +
+         dump_log_prediction_options(options.prediction);
+}
+
+}  // namespace lookahead::predictor
