@@ -27,7 +27,7 @@ SEEDS=${SEEDS:-"1 2 3 4 5"}
 PROPOSALS=${PROPOSALS:-"matching standard"}
 REFERENCE=${REFERENCE:-1000}
 OUT=${1:-out/bench/pslam_particles}
-LA=./build/lookahead
+LA=${LOOKAHEAD:-./build/lookahead}  # a copied binary lets you rebuild meanwhile
 mkdir -p "$OUT"
 declare -A REL=([intel-lab]=intel/intel.relations [fr079]=fr079/fr079.relations)
 # One config file per (particle step, predictor): the sections of both in one file.
