@@ -221,7 +221,7 @@ MissionOptions parse_mission_options(const std::string& yaml, const std::string&
   try {
     o.validate();
   } catch (const std::invalid_argument& e) {
-    throw slam::ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+    loader.fail_impossible(e.what());
   }
   return o;
 }

@@ -57,7 +57,7 @@ LogPredictionOptions parse_log_prediction_options(const std::string& yaml, const
     validate(o.predictor);
     validate_targets(o.targets);
   } catch (const std::invalid_argument& e) {
-    throw slam::ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+    loader.fail_impossible(e.what());
   }
   return o;
 }

@@ -84,6 +84,8 @@ TEST(PslamConfig, BadAndImpossibleValuesAreRejected) {
     FAIL() << "no error";
   } catch (const slam::ParseError& e) {
     EXPECT_NE(std::string(e.what()).find("similarity_threshold"), std::string::npos) << e.what();
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.value(), "0.9");
   }
   EXPECT_THROW(parse_log_prediction_options("log_targets:\n  period_updates: 0\n", "x"), slam::ParseError);
   EXPECT_THROW(parse_log_prediction_options("log_targets:\n  range: -1\n", "x"), slam::ParseError);

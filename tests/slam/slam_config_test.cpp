@@ -44,6 +44,27 @@ TEST(SlamConfig, BadValueNamesTheValue) {
   }
 }
 
+// The components validate their own options; the error still points at the key's line.
+TEST(SlamConfig, ImpossibleValueNamesItsLineAndValue) {
+  try {
+    parse_rbpf_options("grid:\n  resolution: 0.05\nprediction:\n  enabled: true\n  hit_ratio_threshold: 1.5\n",
+                       "my.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "my.yaml");
+    EXPECT_EQ(e.line(), 5u);
+    EXPECT_EQ(e.field(), "prediction.hit_ratio_threshold");
+    EXPECT_EQ(e.value(), "1.5");
+  }
+  try {  // a bare key name in the message ("particles in 1..100000")
+    parse_rbpf_options("filter:\n  seed: 3\n  particles: 0\n", "my.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "filter.particles");
+  }
+}
+
 TEST(SlamConfig, ImpossibleValueIsRejected) {
   EXPECT_THROW(parse_rbpf_options("filter:\n  particles: 0\n", "x"), ParseError);
   EXPECT_THROW(parse_rbpf_options("grid:\n  resolution: -1\n", "x"), ParseError);

@@ -65,7 +65,7 @@ SegSlamOptions parse_segslam_options(const std::string& yaml, const std::string&
   try {
     segslam::validate(o);
   } catch (const std::invalid_argument& e) {
-    throw ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+    loader.fail_impossible(e.what());
   }
   return o;
 }

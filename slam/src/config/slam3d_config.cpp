@@ -80,7 +80,7 @@ Slam3dOptions parse_slam3d_options(const std::string& yaml, const std::string& s
     if (!(o.world_resolution > 0.0))
       throw std::invalid_argument("robot: world_resolution must be > 0");
   } catch (const std::invalid_argument& e) {
-    throw ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+    loader.fail_impossible(e.what());
   }
   return o;
 }

@@ -89,7 +89,7 @@ RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& sourc
   try {
     const Rbpf check(o);  // the components validate their own options; no particles yet
   } catch (const std::invalid_argument& e) {
-    throw ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+    loader.fail_impossible(e.what());
   }
   return o;
 }

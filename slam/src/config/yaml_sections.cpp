@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/config/yaml_sections.hpp"
 
+#include <cctype>
 #include <fstream>
 
 #include "lookahead/slam/io/parse_error.hpp"
@@ -57,6 +58,43 @@ void SectionLoader::reject_unknown(const std::set<std::string>& skip) const {
       if (!seen_keys_.count(key)) fail_at(source_, k.first, key, "unknown key");
     }
   }
+}
+
+namespace {
+
+bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; }
+
+// Where `name` first occurs in `text` as a whole name (not inside a longer one), or npos.
+std::size_t find_name(const std::string& text, const std::string& name) {
+  for (std::size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+    const bool starts = at == 0 || !name_char(text[at - 1]);
+    const std::size_t end = at + name.size();
+    const bool ends = end == text.size() || !name_char(text[end]) ||
+                      (text[end] == '.' && (end + 1 == text.size() || !name_char(text[end + 1])));
+    if (starts && ends) return at;
+  }
+  return std::string::npos;
+}
+
+}  // namespace
+
+void SectionLoader::fail_impossible(const std::string& why) const {
+  const std::string reason = "impossible value: " + why;
+  std::size_t first = std::string::npos;
+  YAML::Node where;
+  std::string field;
+  for (const auto& s : root_) {
+    const std::string sec = s.first.as<std::string>();
+    if (!seen_sections_.count(sec)) continue;
+    for (const auto& k : s.second) {
+      const std::string key = k.first.as<std::string>();
+      std::size_t at = find_name(why, sec + "." + key);
+      if (at == std::string::npos) at = find_name(why, key);
+      if (at < first) first = at, where.reset(k.second), field = sec + "." + key;
+    }
+  }
+  if (first == std::string::npos) throw ParseError(source_, 0, "", "", reason);
+  fail_at(source_, where, field, reason);
 }
 
 }  // namespace lookahead::slam::config

@@ -109,7 +109,7 @@ HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& sou
     if (!(c.simulation.dt > 0.0)) throw std::invalid_argument("simulation.dt must be > 0");
     validate(c.scan_landmarks);
   } catch (const std::invalid_argument& e) {
-    throw ParseError(source, 0, "", "", std::string("impossible value: ") + e.what());
+    loader.fail_impossible(e.what());
   }
   return c;
 }

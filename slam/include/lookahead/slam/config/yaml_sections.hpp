@@ -42,6 +42,10 @@ class SectionLoader {
   /// Every section and key of the document must have been visited (`skip`: sections
   /// another loader reads).
   void reject_unknown(const std::set<std::string>& skip = {}) const;
+  /// Throws the ParseError of an impossible value that the options' own validation found:
+  /// `why` names the option ("section.key ..." or "key ..."); the error carries the line
+  /// and value of the first key it names that this document sets (line 0 if none).
+  [[noreturn]] void fail_impossible(const std::string& why) const;
 
  protected:
   /// The key's node in the current section (undefined when absent), marked as seen.
