@@ -26,12 +26,6 @@ void visit_sections(LogPredictionOptions& o, V&& v) {
     "the replay waits for a late prediction (false: takes it at a later update, as a live robot)");
 }
 
-struct SectionNames {
-  std::set<std::string> names;
-  void section(const char* name) { names.insert(name); }
-  template <typename T>
-  void operator()(const char* /*key*/, const T& /*field*/, const char* /*doc*/) {}
-};
 
 void validate_targets(const SlamLookaheadOptions& t) {
   if (t.period_updates < 1) throw std::invalid_argument("log_targets.period_updates >= 1");
@@ -63,7 +57,7 @@ LogPredictionOptions parse_log_prediction_options(const std::string& yaml, const
 }
 
 std::set<std::string> log_prediction_section_names() {
-  SectionNames names;
+  slam::config::SectionNames names;
   LogPredictionOptions o;
   visit_sections(o, names);
   return names.names;

@@ -68,13 +68,6 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v("max_hypotheses", o.prediction.max_hypotheses, "hypotheses kept at once (oldest dropped)");
 }
 
-// A visitor that only collects the section names.
-struct SectionNames {
-  std::set<std::string> names;
-  void section(const char* name) { names.insert(name); }
-  template <typename T>
-  void operator()(const char* /*key*/, const T& /*field*/, const char* /*doc*/) {}
-};
 
 }  // namespace
 
@@ -99,7 +92,7 @@ RbpfOptions load_rbpf_options(const std::string& path, const RbpfOptions& base) 
 }
 
 std::set<std::string> rbpf_section_names() {
-  SectionNames names;
+  config::SectionNames names;
   RbpfOptions o;
   visit_sections(o, names);
   return names.names;

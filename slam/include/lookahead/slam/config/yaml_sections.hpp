@@ -59,6 +59,14 @@ class SectionLoader {
   std::set<std::string> seen_sections_, seen_keys_;
 };
 
+/// Collects the names of the sections a key list opens (which sections a loader reads).
+struct SectionNames {
+  std::set<std::string> names;
+  void section(const char* name) { names.insert(name); }
+  template <typename T>
+  void operator()(const char* /*key*/, const T& /*field*/, const char* /*doc*/) {}
+};
+
 class SectionDumper {
  public:
   void section(const char* name) { out_ << name << ":\n"; }
