@@ -69,6 +69,20 @@ nlohmann::json prediction_json(const slam::RbpfStatistics& st, const predictor::
           {"options_yaml", predictor::dump_log_prediction_options(options)}};
 }
 
+// With --predict, map.png marks every prediction's target by what became of it (in the
+// map frame of the best particle when it was made).
+std::vector<slam::PicturePoints> prediction_targets(const predictor::SlamLookaheadStatistics& p) {
+  slam::PicturePoints made{{}, {30, 80, 220}, "prediction target: hypothesis made", 6};
+  slam::PicturePoints no_match{{}, {240, 150, 0}, "... no match above the threshold", 4};
+  slam::PicturePoints no_corner{{}, {150, 150, 150}, "... no control point", 3};
+  for (const auto& r : p.records) {
+    auto& set = r.status == predictor::Prediction::Status::kPredicted ? made
+                : r.status == predictor::Prediction::Status::kNoMatch ? no_match : no_corner;
+    set.points.emplace_back(r.x, r.y);
+  }
+  return {no_corner, no_match, made};
+}
+
 void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbpf& filter,
                    double wall_s, const predictor::SlamLookahead* lookahead,
                    const predictor::LogPredictionOptions& prediction) {
@@ -90,7 +104,8 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   slam::write_map_picture(a.out + "/map.png", map,
                           {{filter.odometry(), {230, 140, 20}, "odometry", 1},
                            {path, {200, 30, 30}, "RBPF estimate (best particle)", 2}},
-                          std::filesystem::path(log.path).filename().string());
+                          std::filesystem::path(log.path).filename().string(),
+                          lookahead ? prediction_targets(lookahead->statistics()) : std::vector<slam::PicturePoints>{});
   const auto& st = filter.statistics();
   const slam::MapEntropy h = slam::map_entropy(map);
   nlohmann::json j;
