@@ -35,9 +35,9 @@ def median(q):
 
 
 def change(a, b):
-    """'-6.2 % (p = 0.35)': b's mean against a's, Welch p (none when both are the same runs)."""
+    """'-6.2 % (p = 0.35)': b's mean against a's, Welch p (none when every seed gave the same value)."""
     d = 100 * (mean(b) - mean(a)) / mean(a)
-    if a == b: return f"{d:+.1f} % (the same runs)"
+    if a == b: return f"{d:+.1f} % (the same values)"
     return f"{d:+.1f} % (p = {welch(b, a)[1]:.3f})"
 
 
