@@ -137,6 +137,7 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
   j["segmentations"] = st.segmentations;
   j["matches"] = st.matches;
   j["match_attempts"] = st.match_attempts;
+  j["match_requests"] = st.match_requests;
   j["matching_thread_s"] = st.matching_seconds;
   j["pruned_submaps"] = st.pruned;
   j["live_submaps"] = f.segmap().live_count();

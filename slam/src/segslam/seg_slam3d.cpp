@@ -222,6 +222,7 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
   std::shared_ptr<const OctreeMatchTarget> target;
   {
     const std::lock_guard<std::mutex> lock(cache_mutex_);
+    ++stats_.match_requests;
     const auto it = match_cache_.find(key);
     if (it != match_cache_.end()) m = it->second, found = true;
     target = targets_[candidate];

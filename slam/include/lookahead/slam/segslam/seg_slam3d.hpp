@@ -106,6 +106,7 @@ struct MatchEvent3 {
 struct SegSlam3dStatistics {
   std::size_t sweeps = 0, updates = 0, resamplings = 0;
   std::size_t segmentations = 0, matches = 0, match_attempts = 0, pruned = 0;
+  std::size_t match_requests = 0;  ///< candidate matches asked for; match_attempts of them searched
   std::vector<double> neff;
   std::vector<MatchEvent3> match_events;  ///< the matches taken
   std::vector<MatchEvent3> match_offers;  ///< every match offered to a particle, taken or not
