@@ -43,9 +43,19 @@ def paired_t(diffs):
 
 
 def student_p(t, dof):
-    # Two-sided p from the regularized incomplete beta function, by continued fraction.
+    """Two-sided p of Student's t: the regularized incomplete beta I_x(dof/2, 1/2)."""
     x = dof / (dof + t * t)
     a, b = dof / 2.0, 0.5
+    # The continued fraction converges for x < (a + 1) / (a + b + 2); beyond, by symmetry.
+    if x > (a + 1) / (a + b + 2):
+        return min(1.0, 1.0 - _beta_fraction(b, a, 1.0 - x))
+    return min(1.0, _beta_fraction(a, b, x))
+
+
+def _beta_fraction(a, b, x):
+    """I_x(a, b) by its continued fraction (Lentz), for x below the mean."""
+    if x <= 0.0:
+        return 0.0
     lbeta = math.lgamma(a) + math.lgamma(b) - math.lgamma(a + b)
     front = math.exp(math.log(x) * a + math.log1p(-x) * b - lbeta) / a
     f, c, d = 1.0, 1.0, 0.0
@@ -63,7 +73,7 @@ def student_p(t, dof):
         f *= c * d
         if abs(1.0 - c * d) < 1e-12:
             break
-    return min(1.0, front * (f - 1.0))
+    return front * (f - 1.0)
 
 
 def main(out):

@@ -3,9 +3,9 @@
 """Table of bench/pslam/particles_study.sh: P-SLAM at 40 particles against the RBPF at 40 and
 200, per log and particle step, from OUT/runs.tsv.
 
-Per cell: mean +- std over the odometry seeds of the Kuemmerle translational error, the
+Per cell: mean +- std over the runs (odometry seeds x filter seeds) of the Kuemmerle translational error, the
 rotational error and the KL divergence from the 1000-particle map; then the paired
-differences (same odometry log) P-SLAM 40 - RBPF 40 and P-SLAM 40 - RBPF 200 with a paired
+differences (same odometry log and filter seed) P-SLAM 40 - RBPF 40 and P-SLAM 40 - RBPF 200 with a paired
 t-test.
 """
 import csv
@@ -28,7 +28,8 @@ def main(path):
     rows = list(csv.DictReader(open(path), delimiter="\t"))
     cells = {}
     for r in rows:
-        cells.setdefault((r["log"], r["proposal"]), {}).setdefault(r["filter"], {})[int(r["odometry_seed"])] = r
+        run = (int(r["odometry_seed"]), int(r.get("filter_seed") or 1))
+        cells.setdefault((r["log"], r["proposal"]), {}).setdefault(r["filter"], {})[run] = r
     print("| log | particle step | filter | runs | relative error m | rot. deg | KL from 1000-particle map [nats] "
           "| wall s (median) | requests / hypotheses / used / rejected (sum) |")
     print("|---|---|---|---|---|---|---|---|---|")
@@ -44,8 +45,8 @@ def main(path):
             print(f"| {log} | {proposal} | {f} | {len(rs)} | {fmt([float(r['trans_mean_m']) for r in rs])} | "
                   f"{fmt([float(r['rot_mean_deg']) for r in rs], 2)} | {fmt([float(r['kl_nats']) for r in rs], 0)} | "
                   f"{statistics.median(float(r['wall_s']) for r in rs):.1f} | {pred} |")
-    print("\nPaired by odometry seed (P-SLAM minus the RBPF), t-test:\n")
-    print("| log | particle step | pair | seeds | error difference m (t, p) | KL difference nats (t, p) |")
+    print("\nPaired by odometry log and filter seed (P-SLAM minus the RBPF), t-test:\n")
+    print("| log | particle step | pair | runs | error difference m (t, p) | KL difference nats (t, p) |")
     print("|---|---|---|---|---|---|")
     for (log, proposal), by_filter in cells.items():
         for mine, other in (("pslam 40", "rbpf 40"), ("pslam 40", "rbpf 200"), ("pslam-paper 40", "rbpf 40"),
