@@ -124,6 +124,25 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   EXPECT_GT(a.predicted, 0.05);
 }
 
+// A frontier whose far side has been seen since the frontiers were found has an empty
+// region: nothing in it is predicted, so no prediction leaves it out (counting it covered
+// skipped every frontier of a KTH plan at 10.8 s and ended the mission at 7 % explored).
+TEST(PredictedMap, AnEmptyRegionIsNotCoveredByPrediction) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  for (int y = -20; y < 40; ++y) {
+    for (int x = -5; x < 40; ++x) map.add_log_odds({x, y}, -1000);  // all seen, free
+  }
+  for (int y = 0; y < 20; ++y) cluster.cells.push_back({0, y});  // a stale frontier
+  cluster.has_goal = true;
+  cluster.goal_y = 0.5;
+  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0};
+  PredictedMap none;
+  const RegionArea a = none.region_area(map, cluster, rule);
+  EXPECT_DOUBLE_EQ(a.predicted + a.unpredicted, 0.0);
+  EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
+}
+
 // A wall 0.25 m beyond the frontier with a three-cell (0.15 m) gap, as a wall seen from afar
 // has between beams: the region leaks through it unless such gaps count as wall.
 TEST(PredictedMap, AGapInAWallClosesTheRegionWithWallGap) {

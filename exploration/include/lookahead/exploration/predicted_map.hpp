@@ -33,6 +33,10 @@ struct SkipRule {
 struct RegionArea {
   double predicted = 0.0;    ///< by a hypothesis with the minimum Psi
   double unpredicted = 0.0;  ///< what driving there would still reveal
+  bool closed_by_prediction = false;  ///< a predicted wall bounds it
+  /// Something of it is predicted: a predicted part or a predicted wall closing it. An
+  /// empty region (the far side already seen) is not left out by any prediction.
+  [[nodiscard]] bool touched_by_prediction() const { return predicted > 0 || closed_by_prediction; }
 };
 
 class PredictedMap {
