@@ -17,6 +17,8 @@
 # Usage (repository root, after building):
 #   bash bench/pslam/particles_study.sh [OUT]
 #   LOGS="intel-lab fr079" SEEDS="1 2 3 4 5" PROPOSALS="matching standard" REFERENCE=1000
+#   FILTER_SEEDS="1 2 3" (filter seeds per odometry log; runs of seeds > 1 end in -f<seed>)
+#   FILTERS="rbpf-40 pslam-40" (a subset of rbpf-40 pslam-40 pslam-paper-40 rbpf-200)
 # Finished runs (a run.json in their folder) are kept: rerunning resumes. The table is
 # printed and written to OUT/summary.md; every run's figures to OUT/runs.tsv.
 set -euo pipefail
@@ -25,6 +27,8 @@ DATA=${LOOKAHEAD_SHARED_DIR:-../shared}/data
 LOGS=${LOGS:-"intel-lab fr079"}
 SEEDS=${SEEDS:-"1 2 3 4 5"}
 PROPOSALS=${PROPOSALS:-"matching standard"}
+FILTER_SEEDS=${FILTER_SEEDS:-"1"}
+FILTERS=${FILTERS:-"rbpf-40 pslam-40 pslam-paper-40 rbpf-200"}
 REFERENCE=${REFERENCE:-1000}
 OUT=${1:-out/bench/pslam_particles}
 LA=${LOOKAHEAD:-./build/lookahead}  # a copied binary lets you rebuild meanwhile
@@ -48,7 +52,7 @@ run() {  # run DIR ARGS...: one lookahead slam run unless it is already there
 }
 
 tsv=$OUT/runs.tsv
-echo -e "log\todometry_seed\tproposal\tfilter\ttrans_mean_m\ttrans_std_m\trot_mean_deg\tkl_nats\twall_s\trequests\thypotheses\tused\trejected" > "$tsv"
+echo -e "log\todometry_seed\tfilter_seed\tproposal\tfilter\ttrans_mean_m\ttrans_std_m\trot_mean_deg\tkl_nats\twall_s\trequests\thypotheses\tused\trejected" > "$tsv"
 for name in $LOGS; do
   for s in $SEEDS; do
     log=$OUT/$name-synth$s.log
@@ -56,22 +60,26 @@ for name in $LOGS; do
     ref=$OUT/$name-$s-ref$REFERENCE
     run "$ref" "$log" --particles "$REFERENCE"
     for proposal in $PROPOSALS; do
+      for fs in $FILTER_SEEDS; do
       for filter in "rbpf 40 default" "pslam 40 default --predict" "pslam-paper 40 paper --predict" "rbpf 200 default"; do
         read -r label n predictor flag <<< "$filter"
+        [[ " $FILTERS " == *" $label-$n "* ]] || continue
         dir=$OUT/$name-$s-$proposal-$label-$n
+        [ "$fs" = 1 ] || dir=$dir-f$fs
         # shellcheck disable=SC2086
-        run "$dir" "$log" --particles "$n" ${flag:-} --config "$OUT/config-$proposal-$predictor.yaml"
+        run "$dir" "$log" --particles "$n" --seed "$fs" ${flag:-} --config "$OUT/config-$proposal-$predictor.yaml"
         err=$($LA eval --trajectory "$dir/trajectory.txt" --relations "$DATA/${REL[$name]}" --json | tail -1)
         kl=$($LA eval --map "$dir/map.yaml" --reference-map "$ref/map.yaml" --json | tail -1)
-        python3 - "$name" "$s" "$proposal" "$label $n" "$err" "$kl" "$dir/run.json" >> "$tsv" <<'PY'
+        python3 - "$name" "$s" "$fs" "$proposal" "$label $n" "$err" "$kl" "$dir/run.json" >> "$tsv" <<'PY'
 import json, sys
-name, seed, proposal, label, err, kl, run = sys.argv[1:]
+name, seed, fseed, proposal, label, err, kl, run = sys.argv[1:]
 e, k, r = json.loads(err), json.loads(kl), json.load(open(run))
 p = r.get('prediction') or {}
-print('\t'.join(str(x) for x in [name, seed, proposal, label, e['trans_mean_m'], e['trans_std_m'], e['rot_mean_deg'],
+print('\t'.join(str(x) for x in [name, seed, fseed, proposal, label, e['trans_mean_m'], e['trans_std_m'], e['rot_mean_deg'],
       k['kl_divergence_nats'], r['wall_time_s'], p.get('requests', '-'), p.get('hypotheses', '-'),
       p.get('used', '-'), p.get('rejected_by_hit_ratio', '-')]))
 PY
+      done
       done
     done
   done
