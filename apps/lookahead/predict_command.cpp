@@ -7,10 +7,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "lookahead/predictor/prediction_picture.hpp"
+#include "lookahead/predictor/pslam_config.hpp"
 #include "lookahead/predictor/structure_predictor.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
@@ -19,10 +21,20 @@ namespace lookahead::app {
 namespace {
 
 struct PredictArgs {
-  std::string map, out = "out/predict";
+  std::string map, out = "out/predict", config;
   std::vector<double> target;
-  predictor::PredictorOptions options;
+  // Given on the command line: they override the config file's predictor section.
+  std::optional<double> diameter, threshold, control_range;
 };
+
+predictor::PredictorOptions options_of(const PredictArgs& a) {
+  predictor::PredictorOptions o = predictor::load_pslam_options(a.config).prediction.predictor;
+  if (a.diameter) o.surroundings_diameter = *a.diameter;
+  if (a.threshold) o.similarity_threshold = *a.threshold;
+  if (a.control_range) o.control_point_range = *a.control_range;
+  predictor::validate(o);
+  return o;
+}
 
 // A map_server map: its YAML, or the image beside a YAML of the same name.
 slam::ProbabilityMap load_map(const std::string& path) {
@@ -54,9 +66,10 @@ nlohmann::json to_json(const predictor::Prediction& p) {
 
 int run_predict(const PredictArgs& a) {
   const slam::OccupancyGrid map = slam::to_occupancy_grid(load_map(a.map));
-  const predictor::Prediction p = predictor::predict_structure(map, a.target[0], a.target[1], a.options);
+  const predictor::PredictorOptions options = options_of(a);
+  const predictor::Prediction p = predictor::predict_structure(map, a.target[0], a.target[1], options);
   std::filesystem::create_directories(a.out);
-  predictor::write_prediction_picture(a.out + "/prediction.png", map, p, a.options);
+  predictor::write_prediction_picture(a.out + "/prediction.png", map, p, options);
   if (p.hypothesis) slam::write_map(slam::to_probability_map(p.hypothesis->grid, 0), a.out, "hypothesis");
   std::ofstream(a.out + "/prediction.json") << to_json(p).dump(2) << "\n";
   fmt::print("{}: {}", a.map, predictor::to_string(p.status));
@@ -74,10 +87,10 @@ Run add_predict_command(CLI::App& app) {
   app.add_option("--target", a->target, "the frontier cell f to predict around, X,Y [m]")
       ->required()->expected(2)->delimiter(',');
   app.add_option("--out", a->out, "output directory");
-  auto& o = a->options;
-  app.add_option("--diameter", o.surroundings_diameter, "d: surroundings and prediction range [m]");
-  app.add_option("--threshold", o.similarity_threshold, "Psi threshold of a hypothesis (0.4..0.7)");
-  app.add_option("--control-range", o.control_point_range, "control point within this of the target [m]");
+  app.add_option("--config", a->config, "YAML with a predictor: section (config/slam/default.yaml format)");
+  app.add_option("--diameter", a->diameter, "d: surroundings and prediction range [m]");
+  app.add_option("--threshold", a->threshold, "Psi threshold of a hypothesis (0.4..0.7)");
+  app.add_option("--control-range", a->control_range, "control point within this of the target [m]");
   app.footer("Exit code 0 when a hypothesis was made, 3 when none cleared the threshold.");
   return [a] { return run_predict(*a); };
 }

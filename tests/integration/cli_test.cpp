@@ -125,6 +125,16 @@ TEST_F(Cli, PredictOnASavedMapWritesItsPictureAndFigures) {
   EXPECT_EQ(fs::exists(dir / "hypothesis.pgm"), r.code == 0);
   r = shell(bin + " predict " + (run / "map.pgm").string() + " --target 2.5,5.0 --out " + dir.string());
   EXPECT_TRUE(r.code == 0 || r.code == 3) << r.output;  // the PGM finds its YAML beside it
+  // The predictor section of a config file; a misspelt key is refused with file and line.
+  const fs::path config = dir / "predictor.yaml";
+  std::ofstream(config) << "predictor:\n  similarity_threshold: 0.4\n";
+  r = shell(bin + " predict " + (run / "map.yaml").string() + " --target 2.5,5.0 --config " + config.string() +
+            " --out " + dir.string());
+  EXPECT_TRUE(r.code == 0 || r.code == 3) << r.output;
+  std::ofstream(config) << "predictor:\n  similarity_treshold: 0.4\n";
+  r = shell(bin + " predict " + (run / "map.yaml").string() + " --target 2.5,5.0 --config " + config.string());
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("predictor.yaml:2"), std::string::npos) << r.output;
 }
 
 TEST_F(Cli, ExploreKeepsTheConfigsSeedUnlessSeedIsGiven) {
