@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "lookahead/predictor/pslam_config.hpp"
 #include "lookahead/predictor/slam_lookahead.hpp"
+#include "lookahead/slam/config/slam_config.hpp"
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/map_io.hpp"
@@ -19,10 +21,8 @@
 #include "lookahead/slam/rbpf/rbpf.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
-#include "slam_segslam.hpp"
-#include "lookahead/predictor/pslam_config.hpp"
-#include "lookahead/slam/config/slam_config.hpp"
 #include "slam_hybrid.hpp"
+#include "slam_segslam.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -46,13 +46,15 @@ struct SlamArgs {
   int map_samples = -1;
 };
 
-slam::RbpfOptions options_from(const SlamArgs& a) {
-  slam::RbpfOptions o = predictor::load_pslam_options(a.config).rbpf;
+// The RBPF's and the predictor's options of --config, with the command line's overrides.
+predictor::PslamOptions options_from(const SlamArgs& a) {
+  predictor::PslamOptions file = predictor::load_pslam_options(a.config);
+  slam::RbpfOptions& o = file.rbpf;
   if (a.particles >= 0) o.particles = a.particles;
   if (a.seed >= 0) o.seed = static_cast<std::uint64_t>(a.seed);
   if (a.threads >= 0) o.threads = a.threads;
   if (a.predict) o.prediction.enabled = true;
-  return o;
+  return file;
 }
 
 nlohmann::json prediction_json(const slam::RbpfStatistics& st, const predictor::SlamLookaheadStatistics& p,
@@ -129,7 +131,8 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
 
 int run_slam(const SlamArgs& a) {
   // --config is a HybridSLAM YAML with --method hybrid, read in run_slam_hybrid.
-  const slam::RbpfOptions options = a.method == "hybrid" ? slam::RbpfOptions{} : options_from(a);
+  const predictor::PslamOptions file = a.method == "hybrid" ? predictor::PslamOptions{} : options_from(a);
+  const slam::RbpfOptions& options = file.rbpf;
   slam::LogReadOptions read;
   read.skip_bad_lines = a.skip_bad_lines;
   spdlog::info("reading {}", a.log);
@@ -144,8 +147,7 @@ int run_slam(const SlamArgs& a) {
                log.scans.front().ranges.size(), options.particles);
   slam::Rbpf filter(options);
   // P-SLAM: predictions of the region ahead enter the weights (off: plain RBPF, bit for bit).
-  const predictor::LogPredictionOptions prediction =
-      a.method == "hybrid" ? predictor::LogPredictionOptions{} : predictor::load_pslam_options(a.config).prediction;
+  const predictor::LogPredictionOptions& prediction = file.prediction;
   std::unique_ptr<predictor::SlamLookahead> lookahead;
   if (options.prediction.enabled) {
     lookahead = std::make_unique<predictor::SlamLookahead>(prediction.predictor, prediction.targets);
