@@ -56,6 +56,13 @@ TEST(SlamConfig, ImpossibleValueNamesItsLineAndValue) {
     EXPECT_EQ(e.field(), "prediction.hit_ratio_threshold");
     EXPECT_EQ(e.value(), "1.5");
   }
+  try {  // the motion model's own check names the key too
+    parse_rbpf_options("motion:\n  srr: 0.1\n  stt: -1\n", "my.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "motion.stt");
+  }
   try {  // a bare key name in the message ("particles in 1..100000")
     parse_rbpf_options("filter:\n  seed: 3\n  particles: 0\n", "my.yaml");
     FAIL() << "no error";

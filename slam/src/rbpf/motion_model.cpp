@@ -4,14 +4,21 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace lookahead::slam {
 
 OdometryMotionModel::OdometryMotionModel(const MotionModelOptions& options) : o_(options) {
-  if (o_.srr < 0 || o_.srt < 0 || o_.str < 0 || o_.stt < 0 || !(o_.min_sigma_xy > 0) ||
-      !(o_.min_sigma_theta > 0)) {
-    throw std::invalid_argument("motion model: noise terms must be >= 0 and floors > 0");
-  }
+  // Each message names its key, so a config error points at the line that set it.
+  const auto require = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("motion model: ") + what);
+  };
+  require(o_.srr >= 0, "srr >= 0");
+  require(o_.srt >= 0, "srt >= 0");
+  require(o_.str >= 0, "str >= 0");
+  require(o_.stt >= 0, "stt >= 0");
+  require(o_.min_sigma_xy > 0, "min_sigma_xy > 0");
+  require(o_.min_sigma_theta > 0, "min_sigma_theta > 0");
 }
 
 void OdometryMotionModel::sigmas(const Pose2& u, double& sx, double& sy, double& st) const {
