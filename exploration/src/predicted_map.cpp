@@ -68,8 +68,7 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
     // seen since the frontiers were last found has an empty region (0 m^2 both ways), and
     // counting it as predicted skipped every frontier of kth_0510034869 at 10.8 s, ending
     // the mission at 7 % explored (README, reproduction 3).
-    const RegionArea a = region_area(map, cluster, rule);
-    return a.touched_by_prediction() && a.unpredicted <= rule.region_tolerance ? 1.0 : 0.0;
+    return region_area(map, cluster, rule).covered(rule.region_tolerance) ? 1.0 : 0.0;
   }
   // The frontier cluster's goal stands for the target cell f the predictor was given; the
   // goal of the same frontier moves a little as the map grows (1 m, as Mission's same goal).
@@ -81,8 +80,7 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
 bool PredictedMap::borders_prediction(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                       const SkipRule& rule) const {
   if (rule.region_radius <= 0 || !cluster.has_goal) return false;
-  const RegionArea a = region_area(map, cluster, rule);
-  return a.predicted > 0 && a.unpredicted > rule.region_tolerance;
+  return region_area(map, cluster, rule).partly_predicted(rule.region_tolerance);
 }
 
 RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,

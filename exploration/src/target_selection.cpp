@@ -118,9 +118,16 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
     if (in.predicted && in.strategy->uses_prediction()) {
       const PredictedMap& pm = *in.predicted;
       const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
-      out.push_back({&f, d, gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known),
-                     pm.covered_share(*in.map, f, in.skip)});
-      if (in.skip.neighbours_last) out.back().borders_prediction = pm.borders_prediction(*in.map, f, in.skip);
+      Candidate c{&f, d, gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known), 0.0};
+      if (in.skip.region_radius > 0) {
+        // One flood fill of the frontier's region for every verdict of the region rule.
+        const RegionArea a = pm.region_area(*in.map, f, in.skip);
+        c.predicted_share = a.covered(in.skip.region_tolerance) ? 1.0 : 0.0;
+        c.borders_prediction = in.skip.neighbours_last && a.partly_predicted(in.skip.region_tolerance);
+      } else {
+        c.predicted_share = pm.covered_share(*in.map, f, in.skip);
+      }
+      out.push_back(c);
       continue;
     }
     out.push_back({&f, d, gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, nullptr), 0.0});

@@ -141,6 +141,10 @@ TEST(PredictedMap, AnEmptyRegionIsNotCoveredByPrediction) {
   const RegionArea a = none.region_area(map, cluster, rule);
   EXPECT_DOUBLE_EQ(a.predicted + a.unpredicted, 0.0);
   EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
+  EXPECT_FALSE(a.covered(1.0));
+  EXPECT_TRUE((RegionArea{0.0, 0.0, true}).covered(0.0));  // a predicted wall closing it touches it
+  EXPECT_FALSE((RegionArea{0.5, 1.5, false}).covered(1.0));
+  EXPECT_TRUE((RegionArea{0.5, 1.5, false}).partly_predicted(1.0));
 }
 
 // A wall 0.25 m beyond the frontier with a three-cell (0.15 m) gap, as a wall seen from afar

@@ -37,6 +37,11 @@ struct RegionArea {
   /// Something of it is predicted: a predicted part or a predicted wall closing it. An
   /// empty region (the far side already seen) is not left out by any prediction.
   [[nodiscard]] bool touched_by_prediction() const { return predicted > 0 || closed_by_prediction; }
+  /// Left out by look-ahead mapping: touched by a prediction, and at most `tolerance` of it
+  /// is not predicted [m^2].
+  [[nodiscard]] bool covered(double tolerance) const { return touched_by_prediction() && unpredicted <= tolerance; }
+  /// Part of it is predicted, more than `tolerance` of it is not [m^2].
+  [[nodiscard]] bool partly_predicted(double tolerance) const { return predicted > 0 && unpredicted > tolerance; }
 };
 
 class PredictedMap {
