@@ -52,7 +52,9 @@ run() {  # run DIR ARGS...: one lookahead slam run unless it is already there
 }
 
 tsv=$OUT/runs.tsv
-echo -e "log\todometry_seed\tfilter_seed\tproposal\tfilter\ttrans_mean_m\ttrans_std_m\trot_mean_deg\tkl_nats\twall_s\trequests\thypotheses\tused\trejected" > "$tsv"
+columns=(log odometry_seed filter_seed proposal filter trans_mean_m trans_std_m rot_mean_deg kl_nats wall_s requests
+         hypotheses used rejected)
+(IFS=$'\t'; echo "${columns[*]}") > "$tsv"
 for name in $LOGS; do
   for s in $SEEDS; do
     log=$OUT/$name-synth$s.log
