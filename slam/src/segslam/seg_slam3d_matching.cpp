@@ -153,7 +153,11 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
   const double angle_step = wide ? options_.extras.wide.guess_angle_step : 0.1;
   const auto key = std::make_tuple(candidate, std::lround(guess.x / step), std::lround(guess.y / step),
                                    std::lround(guess.z / 0.5), std::lround(guess.yaw / angle_step));
-  const auto wide_key = std::tuple_cat(key, std::make_tuple(wide ? std::lround(wide->search_radius) : 0L));
+  // A wide search is shared by every particle with its key, so it must depend on the key
+  // only: its reach is rounded to 1 m and 0.05 rad too (else the particle that asked first
+  // would set it, and runs would depend on thread timing).
+  const auto wide_key = std::tuple_cat(key, std::make_tuple(wide ? std::lround(wide->search_radius) : 0L,
+                                                            wide ? std::lround(wide->search_angle / 0.05) : 0L));
   WindowMatch3 m;
   bool found = false;
   std::shared_ptr<const OctreeMatchTarget> target;
@@ -176,7 +180,10 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
                         normalize_angle(std::get<4>(key) * angle_step)};
     if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
     const SweepWindow& window = window_with_structure(w);
-    m = wide ? match_window_unambiguous(*target, window, rounded, *wide, options_.extras.structure, options_.extras.wide)
+    MatchingOptions shared = wide ? *wide : MatchingOptions{};
+    shared.search_radius = static_cast<double>(std::get<5>(wide_key));
+    shared.search_angle = static_cast<double>(std::get<6>(wide_key)) * 0.05;
+    m = wide ? match_window_unambiguous(*target, window, rounded, shared, options_.extras.structure, options_.extras.wide)
              : match_window(*target, window, rounded, candidate_options(candidate), options_.extras.structure);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     targets_[candidate] = target;

@@ -194,7 +194,7 @@ class SegSlam3d {
   std::mutex cache_mutex_;
   std::map<std::size_t, std::shared_ptr<const OctreeMatchTarget>> targets_;
   std::map<std::tuple<std::size_t, long, long, long, long>, WindowMatch3> match_cache_;
-  std::map<std::tuple<std::size_t, long, long, long, long, long>, WindowMatch3> wide_cache_;  ///< + the reach
+  std::map<std::tuple<std::size_t, long, long, long, long, long, long>, WindowMatch3> wide_cache_;  ///< + the reach
   std::mutex window_mutex_;
   std::optional<SweepWindow> matched_window_;  ///< this update's window with its structure
 };
