@@ -39,6 +39,7 @@ struct Slam3dArgs {
   std::string segslam_config;  ///< --method segslam: YAML on top of segslam3d_defaults()
   int map_samples = -1;        ///< --method segslam: offline samples (-1: the config's)
   double max_search_radius = -1.0;  ///< --method segslam: reach cap (< 0: the default)
+  double wide_reentry_radius = -1.0;  ///< --method segslam: wide search cap (0: off, < 0: the default)
 };
 
 struct Input {
@@ -190,7 +191,7 @@ int run_slam3d(const Slam3dArgs& a) {
   const Input in = read_input(a, options);
   if (a.method == "segslam") {
     run_segslam3d({a.input, input_name(a.input), a.out, a.segslam_config, a.map_samples, a.data_seed,
-                   a.max_search_radius}, in.log, options);
+                   a.max_search_radius, a.wide_reentry_radius}, in.log, options);
     if (in.world && a.input == "garage") slam::write_octomap(in.world->map, a.out + "/world.bt");
     return 0;
   }
@@ -240,6 +241,10 @@ Run add_slam3d_command(CLI::App& app) {
   app.add_option("--max-search-radius", args->max_search_radius,
                  "--method segslam: cap of the re-entry search's reach [m], which widens with the motion error "
                  "since the candidate (default 6; 0 keeps the fixed 2 m search)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--wide-reentry-radius", args->wide_reentry_radius,
+                 "--method segslam: cap of the wide re-entry search beyond that reach [m], sized by eq. 18's "
+                 "sigma_tau and taken only when one pose of it fits (default 20; 0: off)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--dump-config", args->dump_config, "print the documented default options and exit");
   return [args] { return run_slam3d(*args); };

@@ -99,6 +99,15 @@ nlohmann::json attempt_json(const slam::segslam::MatchAttempt3& a, const slam::R
                    {"match_path_distance_m", a.match_path_distance},
                    {"proximity_radius_m", a.proximity_radius},
                    {"search_radius_m", a.search_radius},
+                   {"search_angle_rad", a.search_angle},
+                   {"error_since_m", a.error_since},
+                   {"chain_error_m", a.chain_error},
+                   {"wide_proximity_radius_m", a.wide_proximity_radius},
+                   {"wide_search_radius_m", a.wide_search_radius},
+                   {"wide_search_angle_rad", a.wide_search_angle},
+                   {"wide", a.wide},
+                   {"modes", a.modes},
+                   {"confirmation", a.confirmation},
                    {"guess_score", a.guess_score},
                    {"coarse_score", a.coarse_score},
                    {"reference_sweep", a.reference_sweep}};
@@ -138,6 +147,7 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
   j["matches"] = st.matches;
   j["match_attempts"] = st.match_attempts;
   j["match_requests"] = st.match_requests;
+  j["wide_match_attempts"] = st.wide_attempts;
   j["matching_thread_s"] = st.matching_seconds;
   j["pruned_submaps"] = st.pruned;
   j["live_submaps"] = f.segmap().live_count();
@@ -184,6 +194,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   // SPDLOG_LEVEL=debug: every candidate considered is logged and kept in run.json.
   options.extras.record_attempts = spdlog::should_log(spdlog::level::debug);
   if (run.max_search_radius >= 0) options.extras.max_search_radius = run.max_search_radius;
+  if (run.wide_reentry_radius >= 0) options.extras.wide.max_radius = run.wide_reentry_radius;
   SegSlam3d filter(options);
   ProgressBar bar("segslam3d", log.sweeps.size());
   const auto start = std::chrono::steady_clock::now();
@@ -221,6 +232,13 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   j["offline_search_s"] = search_s;
   j["map_samples"] = samples;
   j["max_search_radius"] = options.extras.max_search_radius;
+  const auto& wide = options.extras.wide;
+  j["wide_reentry"] = {{"max_radius_m", wide.max_radius}, {"sigmas", wide.sigmas}, {"trigger_sigmas", wide.trigger_sigmas},
+                       {"guess_step_m", wide.guess_step}, {"guess_angle_step_rad", wide.guess_angle_step},
+                       {"angle_per_error_rad_per_m", wide.angle_per_error}, {"max_angle_rad", wide.max_angle},
+                       {"peaks", wide.peaks}, {"separation_m", wide.separation},
+                       {"angle_separation_rad", wide.angle_separation},
+                       {"confirm_distance_m", wide.confirm_distance}, {"confirm_angle_rad", wide.confirm_angle}};
   j["map_entropy_nats_m3"] = best_map.best.entropy;
   j["sample_entropies"] = best_map.entropies;
   j["map_known_voxels"] = best_map.best.map.known_voxels();

@@ -21,6 +21,8 @@ struct SegSlam3dRun {
   long long data_seed = 1;
   /// Cap of the coarse search's widening reach [m] (candidate_reach.hpp); < 0: the default.
   double max_search_radius = -1.0;
+  /// Cap of the wide, unambiguous re-entry search [m] (wide_reentry.hpp); 0: off, < 0: the default.
+  double wide_reentry_radius = -1.0;
 };
 
 /// segslam3d_defaults() as YAML (config/segslam/garage3d.yaml).

@@ -2,6 +2,7 @@
 #include "lookahead/slam/segslam/level_coarse_search.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -117,6 +118,39 @@ LevelCoarseResult level_search_branch_and_bound(const NearOccupiedField& field, 
   }
   const Scorer score(field, points, guess, grid);
   return score.result(detail::branch_and_bound(score.index, widths.size(), score, score.guess_score));
+}
+
+std::vector<LevelCoarseResult> level_search_peaks(const NearOccupiedField& field, const Points3& points,
+                                                  const Pose4& guess, const LevelPoseGrid& grid, std::size_t count,
+                                                  double separation, double angle_separation) {
+  const std::vector<int> widths = level_bound_widths(grid.step, field.resolution());
+  if (field.bound_widths() != widths) {
+    throw std::invalid_argument("level_search_peaks: the field's bound levels do not fit a " +
+                                std::to_string(grid.step) + " m grid");
+  }
+  const Scorer score(field, points, guess, grid);
+  std::vector<detail::GridHit> found;
+  // A grid pose near an earlier peak scores 0 at level 0; a block's bound is left as it is
+  // (still never below the score of any pose in it).
+  const auto excluded = [&](int a, int i, int j) {
+    for (const detail::GridHit& h : found) {
+      const double dyaw = std::abs(a - h.a) * grid.angle_step;
+      if (std::hypot(i - h.i, j - h.j) * grid.step <= separation && dyaw <= angle_separation) return true;
+    }
+    return false;
+  };
+  const auto bound = [&](std::size_t level, int a, int i, int j) {
+    if (level == 0 && excluded(a, i, j)) return 0;
+    return score(level, a, i, j);
+  };
+  std::vector<LevelCoarseResult> out;
+  while (out.size() < count) {
+    const std::optional<GridHit> hit = detail::branch_and_bound(score.index, widths.size(), bound, 0);
+    if (!hit) break;
+    found.push_back(*hit);
+    out.push_back(score.result(hit));
+  }
+  return out;
 }
 
 }  // namespace lookahead::slam::segslam

@@ -36,13 +36,6 @@ bool explained(OctreeReader& reader, const OctreeGrid& grid, float occupied_abov
   return false;
 }
 
-// The coarse search's grid: steps of 1.5 voxels miss no peak, as the near field reaches one
-// voxel around a surface; yaw in steps of 0.05 rad.
-LevelPoseGrid coarse_grid(const MatchingOptions& o) { return {o.search_radius, 1.5 * o.bin_size, o.search_angle, 0.05}; }
-
-double share(int near, const Points3& points) {
-  return points.empty() ? 0.0 : static_cast<double>(near) / static_cast<double>(points.size());
-}
 
 // Why a match fails its acceptance tests, or "" when it passes them.
 const char* rejection_of(const Icp3Result& icp, const StructureFit& f, const MatchingOptions& o,
@@ -55,6 +48,13 @@ const char* rejection_of(const Icp3Result& icp, const StructureFit& f, const Mat
 }
 
 }  // namespace
+
+// Steps of 1.5 voxels miss no peak, as the near field reaches one voxel around a surface.
+LevelPoseGrid coarse_grid(const MatchingOptions& o) { return {o.search_radius, 1.5 * o.bin_size, o.search_angle, 0.05}; }
+
+double share_of(int count, const Points3& points) {
+  return points.empty() ? 0.0 : static_cast<double>(count) / static_cast<double>(points.size());
+}
 
 double predictive_score(const EvidenceOctree& map, const Pose4& pose, const SweepWindow& w) {
   if (w.scored.empty()) return -1.0;
@@ -115,9 +115,18 @@ WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w,
   m.rejection = "too few points";
   if (target.icp.size() < 10 || w.cloud.size() < 10) return m;
   const LevelCoarseResult seed = level_search_branch_and_bound(target.field, w.scored, guess, coarse_grid(o));
-  m.guess_score = share(near_in_plane_count(target.field, guess, w.scored), w.scored);
-  m.coarse_score = share(seed.score, w.scored);
-  const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed.pose, {o.icp_iterations, o.icp_max_distance});
+  m = refine_match(target, w, seed.pose, guess, o, so);
+  m.guess_score = share_of(near_in_plane_count(target.field, guess, w.scored), w.scored);
+  m.coarse_score = share_of(seed.score, w.scored);
+  return m;
+}
+
+WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& w, const Pose4& seed, const Pose4& guess,
+                          const MatchingOptions& o, const StructureTestOptions& so) {
+  WindowMatch3 m;
+  m.rejection = "too few points";
+  if (target.icp.size() < 10 || w.cloud.size() < 10) return m;
+  const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance});
   m.pose = icp.transform;
   m.all_points_error = icp.mean_error;
   m.translation = (m.pose.position() - guess.position()).norm();

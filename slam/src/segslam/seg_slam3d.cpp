@@ -14,7 +14,6 @@
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/rbpf3d/motion3_model.hpp"
-#include "lookahead/slam/segslam/candidate_reach.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/segmentation.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
@@ -64,25 +63,11 @@ struct SegSlam3d::SweepModel {
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
 // The sweep's beams (every n-th) in the submap frame with the robot at `pose`.
 std::vector<Ray3> rays_at(const Pose3& pose, const std::vector<Ray3>& local) {
   std::vector<Ray3> out(local.size());
   for (std::size_t k = 0; k < local.size(); ++k) out[k] = {pose * local[k].origin, pose * local[k].end, local[k].hit};
   return out;
-}
-
-// Distance in the plane from p to the nearest pose of a submap's path, if one is within
-// `height` of p's height [m].
-double distance_to_path(const OctreeSubmap& s, const Pose4& p, double height) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& [sweep, q] : s.path) {
-    if (std::abs(q.z - p.z) <= height) best = std::min(best, std::hypot(q.x - p.x, q.y - p.y));
-  }
-  return best;
 }
 
 }  // namespace
@@ -96,6 +81,7 @@ SegSlam3d::SegSlam3d(const SegSlam3dOptions& options)
     throw std::invalid_argument(
         "segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10, max_search_radius >= 0");
   }
+  validate(e.wide);
   if (!(e.structure.min_inlier_ratio >= 0 && e.structure.min_inlier_ratio <= 1) ||
       !(e.structure.max_free_ratio >= 0 && e.structure.max_free_ratio <= 1)) {
     throw std::invalid_argument("segslam3d: structure.min_inlier_ratio and max_free_ratio in 0..1");
@@ -153,110 +139,6 @@ SweepWindow SegSlam3d::window_after(std::size_t sweep) const {
                            false);
 }
 
-const SweepWindow& SegSlam3d::window_with_structure(const SweepWindow& w) {
-  const std::lock_guard<std::mutex> lock(window_mutex_);
-  if (!matched_window_) {
-    matched_window_ = w;
-    find_structure(*matched_window_, options_.segslam.matching);
-  }
-  return *matched_window_;
-}
-
-std::vector<WindowMatch3> SegSlam3d::match_candidates(const SegParticle3& p, const SweepWindow& w,
-                                                      std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
-                                                      std::vector<MatchAttempt3>& attempts, std::mt19937_64& rng) {
-  const MatchingOptions& o = options_.segslam.matching;
-  const double now = sweeps_[last_update_].time;
-  const auto sample = sample_local_map(segmap_, p.submap, kNoSubmap, o.sample_submaps, rng);
-  const OctreeSubmap* own_root = frame_root(segmap_, p.submap);
-  struct Candidate {
-    double distance;
-    std::size_t id;
-    Pose4 guess;
-    std::size_t attempt;  // index into `attempts` when recording
-  };
-  const bool record = options_.extras.record_attempts;
-  std::vector<Candidate> candidates;
-  for (std::size_t i = 1; i < sample.size(); ++i) {
-    const OctreeSubmap& c = segmap_.at(sample[i].id);
-    // Sec. 4.5.1 winnowing as in 2D: temporal separation, not the particle's own frame,
-    // and (Deviation, as in 2D) near the candidate's own path, here also in height.
-    if (c.interval.t_end > now - o.min_separation_s) continue;
-    if (frame_root(segmap_, c)->interval == own_root->interval) continue;
-    const Pose4 guess = sample[i].frame.inverse().compose(p.pose);
-    const double d = distance_to_path(c, guess, options_.extras.proximity_height);
-    const double radius = candidate_options(sample[i].id).proximity_radius;
-    const bool far = d > radius;
-    const bool near = !far && has_observed_near(c.map, guess.position(), radius);
-    if (record) {
-      attempts.push_back(attempt_of(sample[i].id, guess, d));
-      attempts.back().outcome = far ? AttemptOutcome::kFar : near ? AttemptOutcome::kNotNearest : AttemptOutcome::kUnobserved;
-    }
-    if (!near) continue;
-    candidates.push_back({d, sample[i].id, guess, attempts.size() - 1});
-  }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
-  if (candidates.size() > static_cast<std::size_t>(o.max_candidates)) candidates.resize(static_cast<std::size_t>(o.max_candidates));
-  std::vector<WindowMatch3> out;
-  for (const Candidate& c : candidates) {
-    const WindowMatch3 m = cached_match(c.id, c.guess, w);
-    if (record) {
-      MatchAttempt3& a = attempts[c.attempt];
-      a.outcome = m.ok ? AttemptOutcome::kOffered : AttemptOutcome::kRejected;
-      a.guess_score = m.guess_score, a.coarse_score = m.coarse_score, a.pose = m.pose, a.rejection = m.rejection;
-      a.match_path_distance = distance_to_path(segmap_.at(c.id), m.pose, options_.extras.proximity_height);
-    }
-    if (!m.ok) continue;
-    ids.push_back(c.id);
-    guesses.push_back(c.guess);
-    out.push_back(m);
-  }
-  return out;
-}
-
-WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w) {
-  const auto key = std::make_tuple(candidate, std::lround(guess.x / 0.5), std::lround(guess.y / 0.5),
-                                   std::lround(guess.z / 0.5), std::lround(guess.yaw / 0.1));
-  WindowMatch3 m;
-  bool found = false;
-  std::shared_ptr<const OctreeMatchTarget> target;
-  {
-    const std::lock_guard<std::mutex> lock(cache_mutex_);
-    ++stats_.match_requests;
-    const auto it = match_cache_.find(key);
-    if (it != match_cache_.end()) m = it->second, found = true;
-    target = targets_[candidate];
-  }
-  if (!found) {
-    const auto start = std::chrono::steady_clock::now();
-    // Searched from the rounded guess: the result does not depend on which particle asked.
-    const Pose4 rounded{std::get<1>(key) * 0.5, std::get<2>(key) * 0.5, std::get<3>(key) * 0.5,
-                        normalize_angle(std::get<4>(key) * 0.1)};
-    if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
-    m = match_window(*target, window_with_structure(w), rounded, candidate_options(candidate), options_.extras.structure);
-    const std::lock_guard<std::mutex> lock(cache_mutex_);
-    targets_[candidate] = target;
-    match_cache_.emplace(key, m);
-    ++stats_.match_attempts;
-    stats_.matching_seconds += seconds_since(start);
-  }
-  m.translation = (m.pose.position() - guess.position()).norm();
-  m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;
-  return m;
-}
-
-MatchingOptions SegSlam3d::candidate_options(std::size_t candidate) const {
-  // Deviation (candidate_reach.hpp): eq. 18's p(tau^2), the proximity radius and the coarse
-  // search widen with the eq. 13-14 error accumulated since the candidate was left, as sec.
-  // 4.5.2 spreads the localisation filter ("candidate positions at the end of long loops
-  // will be uncertain"). With a fixed 1.5 m sigma, right re-entries after the garage loop
-  // (3-5 m from the map sample's guess) weighed nothing; with a fixed +-2 m search and 4 m
-  // radius they were not reached at all (seed 6, README).
-  const double since = motion_error_sum_.at(last_update_) -
-                       motion_error_sum_.at(segmap_.at(candidate).interval.last_scan);
-  return candidate_reach(options_.segslam.matching, since, options_.extras.max_search_radius);
-}
-
 SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng) {
   Transition t;
   const SegmentationOptions& so = options_.segslam.segmentation;
@@ -282,6 +164,9 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
   const ChoiceDraw draw = draw_submap_choice(segment, weights, mo, rng);  // eq. 3
   if (draw.choice == SubmapChoice::kMatch) t.offers[draw.match].chosen = true;
   if (draw.choice == SubmapChoice::kSame) return t;
+  // A pending wide re-entry (wide_reentry.hpp) follows the particle into a fresh frame, which
+  // starts at its pose; a match moves it into another candidate's frame, and it is dropped.
+  if (p.pending) p.pending = draw.choice == SubmapChoice::kNew ? std::optional(carried_into(*p.pending, p.pose)) : std::nullopt;
   const RangeSweep& at = sweeps_[last_update_];
   OctreeSubmap next;
   next.interval = {last_update_, last_update_, at.time, at.time};
@@ -346,6 +231,7 @@ void SegSlam3d::update(std::size_t k) {
   motion_error_sum_[k] = motion_error_sum_[last_update_] + s.motion_error;
   const SweepWindow w = window_after(last_update_);
   match_cache_.clear();
+  wide_cache_.clear();
   matched_window_.reset();
   const int n = static_cast<int>(particles_.size());
   std::vector<Transition> transitions(particles_.size());
@@ -378,42 +264,6 @@ void SegSlam3d::update(std::size_t k) {
   stats_.neff.push_back(resample_if_degenerate(particles_, options_.filter.resample_threshold, rng_, resampled));
   if (resampled) ++stats_.resamplings;
   if (stats_.updates % 10 == 0) prune();
-}
-
-MatchEvent3 SegSlam3d::offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const {
-  MatchEvent3 e;
-  e.sweep = last_update_, e.candidate = candidate, e.weight = m.weight;
-  e.icp_error = m.icp_error, e.all_points_error = m.all_points_error;
-  e.translation = m.translation, e.pose = m.pose, e.guess = guess;
-  e.structure = m.structure;
-  std::tie(e.reference_sweep, e.reference) = nearest_path_pose(candidate, m.pose.position());
-  return e;
-}
-
-std::pair<std::size_t, Pose4> SegSlam3d::nearest_path_pose(std::size_t candidate, const Eigen::Vector3d& p) const {
-  double best = std::numeric_limits<double>::infinity();
-  std::pair<std::size_t, Pose4> out{0, Pose4{}};
-  // The candidate's ancestors share its frame (a match child copies its parent's).
-  for (std::size_t id = candidate; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) {
-    for (const auto& [sweep, q] : segmap_.at(id).path) {
-      const double d = (q.position() - p).norm();
-      if (d < best) best = d, out = {sweep, q};
-    }
-  }
-  return out;
-}
-
-MatchAttempt3 SegSlam3d::attempt_of(std::size_t candidate, const Pose4& guess, double path_distance) const {
-  MatchAttempt3 a;
-  a.sweep = last_update_, a.candidate = candidate, a.guess = guess, a.path_distance = path_distance;
-  const MatchingOptions o = candidate_options(candidate);
-  a.proximity_radius = o.proximity_radius;
-  a.search_radius = o.search_radius;
-  std::tie(a.reference_sweep, a.reference) = nearest_path_pose(candidate, guess.position());
-  for (std::size_t id = candidate; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) {
-    a.intervals.emplace_back(segmap_.at(id).interval.first_scan, segmap_.at(id).interval.last_scan);
-  }
-  return a;
 }
 
 void SegSlam3d::store_transitions(std::vector<Transition>& transitions) {

@@ -44,4 +44,13 @@ LevelCoarseResult level_search_exhaustive(const NearOccupiedField& field, const 
 LevelCoarseResult level_search_branch_and_bound(const NearOccupiedField& field, const Points3& points,
                                                 const Pose4& guess, const LevelPoseGrid& grid);
 
+/// Up to `count` distinct peaks of the grid, best first: the first is the branch and bound's
+/// best pose, each next one the best pose farther than `separation` [m] in the plane or
+/// `angle_separation` [rad] in yaw from every earlier peak (by branch and bound with those
+/// poses scored 0, so the bounds stay bounds). Fewer when no pose scores above 0. Unlike
+/// level_search_branch_and_bound the guess does not stand in for a grid pose.
+std::vector<LevelCoarseResult> level_search_peaks(const NearOccupiedField& field, const Points3& points,
+                                                  const Pose4& guess, const LevelPoseGrid& grid, std::size_t count,
+                                                  double separation, double angle_separation);
+
 }  // namespace lookahead::slam::segslam

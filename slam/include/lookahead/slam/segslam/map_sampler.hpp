@@ -26,6 +26,11 @@ struct PlacedSubmap {
   std::size_t id = kNoSubmap;  ///< kNoSubmap for the start when it is an open submap
   Pose frame;                  ///< the submap frame's origin in the sample frame
   int depth = 0;               ///< link steps from the start
+  /// The placed submap (index into the sample) it was reached from, and by which link: 0
+  /// its predecessor, 1 its successor, 2 its match parent, 3 its match child (-1: the start).
+  /// The chain of links is how its frame was composed (the uncertainty sec. 4.5.2 speaks of).
+  std::size_t from = 0;
+  int link = -1;
 };
 
 /// Grows a sample from `start` (an open submap not yet in `segmap`, or a stored one; its own
@@ -43,7 +48,7 @@ std::vector<PlacedSubmap<Pose>> sample_local_map(const SegMap<Map, Pose>& segmap
   };
   // Places one member of `id`'s segment (a random one unless `exact`) at the frame given by
   // `frame_of(member)`, when its segment is new and compatible.
-  auto try_place = [&](std::size_t id, bool exact, int depth, auto&& frame_of) {
+  auto try_place = [&](std::size_t id, bool exact, int depth, std::size_t from, int link, auto&& frame_of) {
     if (!segmap.contains(id) || placed.size() >= max_submaps) return;
     const Interval& in = segmap.at(id).interval;
     if (segments.count({in.first_scan, in.last_scan})) return;
@@ -55,7 +60,7 @@ std::vector<PlacedSubmap<Pose>> sample_local_map(const SegMap<Map, Pose>& segmap
     }
     segments.insert({in.first_scan, in.last_scan});
     chosen.push_back(in);
-    placed.push_back({pick, frame_of(segmap.at(pick)), depth});
+    placed.push_back({pick, frame_of(segmap.at(pick)), depth, from, link});
   };
   std::vector<std::size_t> level{0};
   for (int depth = 1; !level.empty(); ++depth) {
@@ -76,9 +81,9 @@ std::vector<PlacedSubmap<Pose>> sample_local_map(const SegMap<Map, Pose>& segmap
       }
       std::shuffle(links.begin(), links.end(), rng);
       for (const auto& [id, kind] : links) {
-        if (kind == 0) try_place(id, false, depth, [&](const auto& p) { return f.compose(s.entry).compose(p.exit.inverse()); });
-        if (kind == 1) try_place(id, false, depth, [&](const auto& q) { return f.compose(s.exit).compose(q.entry.inverse()); });
-        if (kind >= 2) try_place(id, true, depth, [&](const auto&) { return f; });
+        if (kind == 0) try_place(id, false, depth, i, kind, [&](const auto& p) { return f.compose(s.entry).compose(p.exit.inverse()); });
+        if (kind == 1) try_place(id, false, depth, i, kind, [&](const auto& q) { return f.compose(s.exit).compose(q.entry.inverse()); });
+        if (kind >= 2) try_place(id, true, depth, i, kind, [&](const auto&) { return f; });
       }
       for (std::size_t k = before; k < placed.size(); ++k) next.push_back(k);
     }

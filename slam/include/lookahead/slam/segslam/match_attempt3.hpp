@@ -19,6 +19,7 @@ enum class AttemptOutcome {
   kNotNearest,  ///< passed proximity, but more than max_candidates were nearer
   kRejected,    ///< matched, and the match failed its tests (`rejection`)
   kOffered,     ///< matched and offered to the particle (eq. 3)
+  kPending,     ///< matched by the wide stage, to be confirmed at the next attempt
 };
 
 inline const char* name_of(AttemptOutcome o) {
@@ -28,6 +29,7 @@ inline const char* name_of(AttemptOutcome o) {
     case AttemptOutcome::kNotNearest: return "not nearest";
     case AttemptOutcome::kRejected: return "rejected";
     case AttemptOutcome::kOffered: return "offered";
+    case AttemptOutcome::kPending: return "pending";
   }
   return "?";
 }
@@ -40,6 +42,14 @@ struct MatchAttempt3 {
   double path_distance = 0.0;  ///< from the guess to the candidate's path, in the plane [m]
   double proximity_radius = 0.0;  ///< the radius it was held against [m]
   double search_radius = 0.0;     ///< the coarse search's reach used for it [m]
+  double search_angle = 0.0;      ///< ... and in yaw [rad]
+  double error_since = 0.0;       ///< eq. 13-14 error since the candidate was left [m]
+  double chain_error = 0.0;       ///< ... and along the map sample's links to it (the wide stage's) [m]
+  /// The wide stage's radius, reach and yaw reach (wide_reentry.hpp), 0 when it has none.
+  double wide_proximity_radius = 0.0, wide_search_radius = 0.0, wide_search_angle = 0.0;
+  bool wide = false;       ///< matched by the wide stage
+  bool confirmation = false;  ///< the check of a pending re-entry (ICP from its prediction)
+  std::size_t modes = 0;   ///< the wide stage's distinct passing poses
   /// The candidate's (or an ancestor's, same frame) path pose nearest to the guess: with
   /// ground truth, reference.between(guess) against the truth says how far off the guess is.
   std::size_t reference_sweep = 0;

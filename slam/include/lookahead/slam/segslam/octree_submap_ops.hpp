@@ -16,6 +16,7 @@
 
 #include "lookahead/slam/geometry/pose4.hpp"
 #include "lookahead/slam/octree/evidence_octree.hpp"
+#include "lookahead/slam/segslam/level_coarse_search.hpp"
 #include "lookahead/slam/segslam/near_occupied_field.hpp"
 #include "lookahead/slam/segslam/point_icp3.hpp"
 #include "lookahead/slam/segslam/segslam_options.hpp"
@@ -46,6 +47,12 @@ double predictive_score(const EvidenceOctree& map, const Pose4& pose, const Swee
 /// Sec. 4.5.1 spatial proximity: does `map` hold observed voxels within `radius` of `p`?
 bool has_observed_near(const EvidenceOctree& map, const Eigen::Vector3d& p, double radius);
 
+/// The coarse search's grid for `options`: steps of 1.5 bins miss no peak, as the near field
+/// reaches one voxel around a surface; yaw in steps of 0.05 rad.
+LevelPoseGrid coarse_grid(const MatchingOptions& options);
+/// The share of `points` a count of them is (0 for none).
+double share_of(int count, const Points3& points);
+
 /// What matching needs of a closed submap, built once per candidate and shared by every
 /// particle and attempt (a closed submap never changes).
 struct OctreeMatchTarget {
@@ -66,6 +73,8 @@ struct WindowMatch3 {
   double guess_score = 0.0;   ///< the coarse search's score (share of points near surfaces) at the guess
   double coarse_score = 0.0;  ///< ... and at its best pose, which seeds ICP
   const char* rejection = "";  ///< why the match failed (empty when ok): for the debug log
+  /// Wide re-entry search only (wide_reentry.hpp): distinct poses that passed the tests.
+  std::size_t modes = 0;
 };
 
 /// Sec. 4.5: a coarse search (x, y, yaw around `guess`, share of points near occupied voxels)
@@ -75,6 +84,10 @@ struct WindowMatch3 {
 /// fitted (`structure`): floor and ceiling fit a wrong re-entry as well as the right one.
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& guess,
                           const MatchingOptions& options, const StructureTestOptions& structure = {});
+/// match_window's ICP from `seed` and its acceptance tests, without the coarse search (its
+/// scores are left 0); tau and the eq. 18 weight are taken against `guess`.
+WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& seed,
+                          const Pose4& guess, const MatchingOptions& options, const StructureTestOptions& structure = {});
 
 /// Submaps of a map sample summed into one set of voxels (independence: overlapping evidence
 /// adds, clamped to the map's bounds); a match child pasted after its parent adds only what

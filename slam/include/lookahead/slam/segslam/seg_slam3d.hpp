@@ -17,7 +17,8 @@
 // difference (the garage's decks share x, y). A match is scored on the window's structure
 // points and vetoed when they land in the candidate's free space (structure_fit.hpp), and
 // eq. 18's p(tau^2), the proximity radius and the coarse search widen with the eq. 13-14
-// error since the candidate (candidate_reach.hpp).
+// error since the candidate (candidate_reach.hpp); beyond that search's cap a wide search
+// sized by eq. 18's sigma_tau is taken only when unambiguous (wide_reentry.hpp).
 #pragma once
 
 #include <cstddef>
@@ -32,11 +33,13 @@
 
 #include "lookahead/slam/geometry/pose4.hpp"
 #include "lookahead/slam/rbpf3d/rbpf3d_options.hpp"
+#include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/match_attempt3.hpp"
 #include "lookahead/slam/segslam/octree_submap_ops.hpp"
 #include "lookahead/slam/segslam/seg_map.hpp"
 #include "lookahead/slam/segslam/segment_picture.hpp"
 #include "lookahead/slam/segslam/segslam_options.hpp"
+#include "lookahead/slam/segslam/wide_reentry.hpp"
 #include "lookahead/slam/sensor/range_sweep.hpp"
 
 namespace lookahead::slam::segslam {
@@ -59,6 +62,8 @@ struct SegSlam3dExtras {
   /// The coarse search's reach widens with the eq. 13-14 error since a candidate was left,
   /// up to this [m] (candidate_reach.hpp). >= 0; 0 keeps matching.search_radius.
   double max_search_radius = 6.0;
+  /// The wide, unambiguous re-entry search beyond that cap (wide_reentry.hpp).
+  WideReentryOptions wide;
   /// Keep every candidate considered, with its outcome, in the statistics (debug log).
   bool record_attempts = false;
 };
@@ -81,6 +86,8 @@ struct SegParticle3 {
   int submap_updates = 0;       ///< filter updates in the open submap
   double motion_error = 0.0;    ///< eq. 13-14, accumulated in the open submap [m]
   int updates_since_match = 0;  ///< since the last matching attempt
+  /// A wide re-entry found at the last attempt, checked at the next one (wide_reentry.hpp).
+  std::optional<PendingReentry> pending;
 };
 
 /// One match a particle was offered (and, if `chosen`, took): enough to check it against
@@ -107,6 +114,7 @@ struct SegSlam3dStatistics {
   std::size_t sweeps = 0, updates = 0, resamplings = 0;
   std::size_t segmentations = 0, matches = 0, match_attempts = 0, pruned = 0;
   std::size_t match_requests = 0;  ///< candidate matches asked for; match_attempts of them searched
+  std::size_t wide_attempts = 0;   ///< of match_attempts, wide searches (wide_reentry.hpp)
   std::vector<double> neff;
   std::vector<MatchEvent3> match_events;  ///< the matches taken
   std::vector<MatchEvent3> match_offers;  ///< every match offered to a particle, taken or not
@@ -150,14 +158,25 @@ class SegSlam3d {
   SweepWindow window_after(std::size_t sweep) const;
   Transition predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng);
   void advance(SegParticle3& p, const SweepModel& model, std::mt19937_64& rng) const;
-  std::vector<WindowMatch3> match_candidates(const SegParticle3& p, const SweepWindow& w,
+  struct Candidate;  // a submap of the particle's map sample left for matching
+  std::vector<Candidate> winnow(const SegParticle3& p, std::size_t skip, std::vector<MatchAttempt3>& attempts,
+                                std::mt19937_64& rng) const;
+  std::vector<WindowMatch3> match_candidates(SegParticle3& p, const SweepWindow& w,
                                              std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
                                              std::vector<MatchAttempt3>& attempts, std::mt19937_64& rng);
   [[nodiscard]] std::pair<std::size_t, Pose4> nearest_path_pose(std::size_t candidate, const Eigen::Vector3d& p) const;
-  [[nodiscard]] MatchAttempt3 attempt_of(std::size_t candidate, const Pose4& guess, double path_distance) const;
+  [[nodiscard]] MatchAttempt3 attempt_of(std::size_t candidate, const Pose4& guess, double path_distance,
+                                         double chain_error, const std::optional<MatchingOptions>& wide) const;
   MatchEvent3 offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const;
-  WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
+  WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w,
+                            const MatchingOptions* wide = nullptr);
+  std::shared_ptr<const OctreeMatchTarget> target_of(std::size_t candidate);
+  std::optional<WindowMatch3> confirm_pending(SegParticle3& p, const SweepWindow& w, std::vector<MatchAttempt3>& attempts);
+  [[nodiscard]] double error_since(std::size_t candidate) const;
   [[nodiscard]] MatchingOptions candidate_options(std::size_t candidate) const;
+  [[nodiscard]] std::optional<MatchingOptions> wide_options(double chain_error) const;
+  [[nodiscard]] std::vector<double> chain_errors(const std::vector<PlacedSubmap<Pose4>>& sample,
+                                                 const SegParticle3& p) const;
   const SweepWindow& window_with_structure(const SweepWindow& w);
   void store_transitions(std::vector<Transition>& transitions);
   void prune();
@@ -175,6 +194,7 @@ class SegSlam3d {
   std::mutex cache_mutex_;
   std::map<std::size_t, std::shared_ptr<const OctreeMatchTarget>> targets_;
   std::map<std::tuple<std::size_t, long, long, long, long>, WindowMatch3> match_cache_;
+  std::map<std::tuple<std::size_t, long, long, long, long, long, long>, WindowMatch3> wide_cache_;  ///< + the reach
   std::mutex window_mutex_;
   std::optional<SweepWindow> matched_window_;  ///< this update's window with its structure
 };

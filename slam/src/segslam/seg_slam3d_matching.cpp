@@ -1,0 +1,340 @@
+// SPDX-License-Identifier: MIT
+// SegSLAM 3D's matching step (Fairfield et al. 2010, sec. 4.5): the candidates of a particle's
+// local map sample, winnowed (sec. 4.5.1), matched (sec. 4.5.2: the capped search of
+// candidate_reach.hpp, then the wide unambiguous search of wide_reentry.hpp) and weighted by
+// eq. 18; the searches are cached per update and shared by the particles. Split out of
+// seg_slam3d.cpp, whose filter loop calls it.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "lookahead/slam/segslam/candidate_reach.hpp"
+#include "lookahead/slam/segslam/map_sampler.hpp"
+#include "lookahead/slam/segslam/seg_slam3d.hpp"
+#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
+#include "lookahead/slam/segslam/wide_reentry.hpp"
+
+namespace lookahead::slam::segslam {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Distance in the plane from p to the nearest pose of a submap's path, if one is within
+// `height` of p's height [m].
+double distance_to_path(const OctreeSubmap& s, const Pose4& p, double height) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& [sweep, q] : s.path) {
+    if (std::abs(q.z - p.z) <= height) best = std::min(best, std::hypot(q.x - p.x, q.y - p.y));
+  }
+  return best;
+}
+
+}  // namespace
+
+const SweepWindow& SegSlam3d::window_with_structure(const SweepWindow& w) {
+  const std::lock_guard<std::mutex> lock(window_mutex_);
+  if (!matched_window_) {
+    matched_window_ = w;
+    find_structure(*matched_window_, options_.segslam.matching);
+  }
+  return *matched_window_;
+}
+
+struct SegSlam3d::Candidate {
+  bool wide_only;  ///< beyond the capped reach, within the wide one (wide_reentry.hpp)
+  std::optional<MatchingOptions> wide;
+  double distance;
+  std::size_t id;
+  Pose4 guess;
+  std::size_t attempt;  ///< index into the attempts when recording
+};
+
+std::vector<WindowMatch3> SegSlam3d::match_candidates(SegParticle3& p, const SweepWindow& w,
+                                                      std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
+                                                      std::vector<MatchAttempt3>& attempts, std::mt19937_64& rng) {
+  const bool record = options_.extras.record_attempts;
+  std::vector<WindowMatch3> out;
+  // Last attempt's wide re-entry, offered if this window confirms it.
+  const std::optional<std::size_t> pending = p.pending ? std::optional(p.pending->candidate) : std::nullopt;
+  const Pose4 pending_guess = p.pending ? p.pending->guess_frame.compose(p.pose) : Pose4{};
+  double pending_weight = 0.0;
+  if (const std::optional<WindowMatch3> m = confirm_pending(p, w, attempts)) {
+    ids.push_back(*pending);
+    guesses.push_back(pending_guess);
+    out.push_back(*m);
+    // Confirmed, it stays pending at the confirmed pose: offered again at every attempt
+    // whose window confirms it, until taken or contradicted.
+    p.pending = pending_of(*pending, m->pose, pending_guess, p.pose);
+    pending_weight = m->weight;
+  }
+  const std::vector<Candidate> candidates = winnow(p, out.empty() ? kNoSubmap : ids.front(), attempts, rng);
+  bool wide_searched = false;
+  for (const Candidate& c : candidates) {
+    WindowMatch3 m;
+    if (!c.wide_only) m = cached_match(c.id, c.guess, w);
+    // The wide stage where the capped search found nothing and the candidate's uncertainty
+    // reaches beyond it; for the nearest such candidate only (its cost: the stage ran for
+    // every candidate at first, and 10 particles took 5-8 times main's time).
+    const bool wide = !m.ok && !wide_searched && c.wide.has_value();
+    if (wide) m = cached_match(c.id, c.guess, w, &*c.wide), wide_searched = true;
+    // A wide pose farther from this particle's guess than the reach (the search started from
+    // a rounded guess, and ICP moves) is outside the region its uncertainty allows. (10
+    // particles, seed 1, sweep 287: 12.2 m from guesses 0.2-0.7 m off the truth, reach 11.3 m,
+    // an alias one column spacing off, confirmed once and taken.)
+    if (wide && m.ok && m.translation > c.wide->search_radius) m.ok = false, m.weight = 0.0, m.rejection = "beyond reach";
+    if (record) {
+      MatchAttempt3& a = attempts[c.attempt];
+      a.outcome = !m.ok ? AttemptOutcome::kRejected : wide ? AttemptOutcome::kPending : AttemptOutcome::kOffered;
+      a.guess_score = m.guess_score, a.coarse_score = m.coarse_score, a.pose = m.pose, a.rejection = m.rejection;
+      a.match_path_distance = distance_to_path(segmap_.at(c.id), m.pose, options_.extras.proximity_height);
+      a.wide = wide, a.modes = m.modes;
+    }
+    if (!m.ok) continue;
+    if (wide) {
+      // Not offered yet: the next attempt checks it (wide_reentry.hpp); it replaces a
+      // confirmed one only if heavier by eq. 18.
+      if (!p.pending || m.weight > pending_weight) p.pending = pending_of(c.id, m.pose, c.guess, p.pose), pending_weight = m.weight;
+      continue;
+    }
+    ids.push_back(c.id);
+    guesses.push_back(c.guess);
+    out.push_back(m);
+  }
+  return out;
+}
+
+std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::size_t skip,
+                                                    std::vector<MatchAttempt3>& attempts, std::mt19937_64& rng) const {
+  const MatchingOptions& o = options_.segslam.matching;
+  const double now = sweeps_[last_update_].time;
+  const auto sample = sample_local_map(segmap_, p.submap, kNoSubmap, o.sample_submaps, rng);
+  const OctreeSubmap* own_root = frame_root(segmap_, p.submap);
+  const std::vector<double> chain = chain_errors(sample, p);
+  std::vector<Candidate> candidates;
+  for (std::size_t i = 1; i < sample.size(); ++i) {
+    if (sample[i].id == skip) continue;  // a pending re-entry, confirmed
+    const OctreeSubmap& c = segmap_.at(sample[i].id);
+    // Sec. 4.5.1 winnowing as in 2D: temporal separation, not the particle's own frame,
+    // and (Deviation, as in 2D) near the candidate's own path, here also in height.
+    if (c.interval.t_end > now - o.min_separation_s) continue;
+    if (frame_root(segmap_, c)->interval == own_root->interval) continue;
+    const Pose4 guess = sample[i].frame.inverse().compose(p.pose);
+    const double d = distance_to_path(c, guess, options_.extras.proximity_height);
+    const double radius = candidate_options(sample[i].id).proximity_radius;
+    const std::optional<MatchingOptions> wide = wide_options(chain[i]);
+    const bool near = d <= radius && has_observed_near(c.map, guess.position(), radius);
+    const bool near_wide = !near && wide && d <= wide->proximity_radius &&
+                           has_observed_near(c.map, guess.position(), wide->proximity_radius);
+    if (options_.extras.record_attempts) {
+      attempts.push_back(attempt_of(sample[i].id, guess, d, chain[i], wide));
+      const bool far = d > (wide ? wide->proximity_radius : radius);
+      attempts.back().outcome = near || near_wide ? AttemptOutcome::kNotNearest : far ? AttemptOutcome::kFar : AttemptOutcome::kUnobserved;
+    }
+    if (!near && !near_wide) continue;
+    candidates.push_back({near_wide, wide, d, sample[i].id, guess, attempts.size() - 1});
+  }
+  // Those within the capped reach first, as before the wide stage: it only fills free places.
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.wide_only != b.wide_only ? b.wide_only : a.distance < b.distance;
+  });
+  if (candidates.size() > static_cast<std::size_t>(o.max_candidates)) candidates.resize(static_cast<std::size_t>(o.max_candidates));
+  return candidates;
+}
+
+WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w,
+                                     const MatchingOptions* wide) {
+  // The wide search reaches metres: its guess is rounded more coarsely, so particles share it.
+  const double step = wide ? options_.extras.wide.guess_step : 0.5;
+  const double angle_step = wide ? options_.extras.wide.guess_angle_step : 0.1;
+  const auto key = std::make_tuple(candidate, std::lround(guess.x / step), std::lround(guess.y / step),
+                                   std::lround(guess.z / 0.5), std::lround(guess.yaw / angle_step));
+  // A wide search is shared by every particle with its key, so it must depend on the key
+  // only: its reach is rounded to 1 m and 0.05 rad too (else the particle that asked first
+  // would set it, and runs would depend on thread timing).
+  const auto wide_key = std::tuple_cat(key, std::make_tuple(wide ? std::lround(wide->search_radius) : 0L,
+                                                            wide ? std::lround(wide->search_angle / 0.05) : 0L));
+  WindowMatch3 m;
+  bool found = false;
+  std::shared_ptr<const OctreeMatchTarget> target;
+  {
+    const std::lock_guard<std::mutex> lock(cache_mutex_);
+    ++stats_.match_requests;
+    if (wide) {
+      const auto it = wide_cache_.find(wide_key);
+      if (it != wide_cache_.end()) m = it->second, found = true;
+    } else {
+      const auto it = match_cache_.find(key);
+      if (it != match_cache_.end()) m = it->second, found = true;
+    }
+    target = targets_[candidate];
+  }
+  if (!found) {
+    const auto start = std::chrono::steady_clock::now();
+    // Searched from the rounded guess: the result does not depend on which particle asked.
+    const Pose4 rounded{std::get<1>(key) * step, std::get<2>(key) * step, std::get<3>(key) * 0.5,
+                        normalize_angle(std::get<4>(key) * angle_step)};
+    if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
+    const SweepWindow& window = window_with_structure(w);
+    MatchingOptions shared = wide ? *wide : MatchingOptions{};
+    shared.search_radius = static_cast<double>(std::get<5>(wide_key));
+    shared.search_angle = static_cast<double>(std::get<6>(wide_key)) * 0.05;
+    m = wide ? match_window_unambiguous(*target, window, rounded, shared, options_.extras.structure, options_.extras.wide)
+             : match_window(*target, window, rounded, candidate_options(candidate), options_.extras.structure);
+    const std::lock_guard<std::mutex> lock(cache_mutex_);
+    targets_[candidate] = target;
+    if (wide) {
+      wide_cache_.emplace(wide_key, m);
+    } else {
+      match_cache_.emplace(key, m);
+    }
+    ++stats_.match_attempts;
+    if (wide) ++stats_.wide_attempts;
+    stats_.matching_seconds += seconds_since(start);
+  }
+  m.translation = (m.pose.position() - guess.position()).norm();
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;
+  return m;
+}
+
+MatchingOptions SegSlam3d::candidate_options(std::size_t candidate) const {
+  // Deviation (candidate_reach.hpp): eq. 18's p(tau^2), the proximity radius and the coarse
+  // search widen with the eq. 13-14 error accumulated since the candidate was left, as sec.
+  // 4.5.2 spreads the localisation filter ("candidate positions at the end of long loops
+  // will be uncertain"). With a fixed 1.5 m sigma, right re-entries after the garage loop
+  // (3-5 m from the map sample's guess) weighed nothing; with a fixed +-2 m search and 4 m
+  // radius they were not reached at all (seed 6, README).
+  return candidate_reach(options_.segslam.matching, error_since(candidate), options_.extras.max_search_radius);
+}
+
+std::shared_ptr<const OctreeMatchTarget> SegSlam3d::target_of(std::size_t candidate) {
+  {
+    const std::lock_guard<std::mutex> lock(cache_mutex_);
+    if (auto t = targets_[candidate]) return t;
+  }
+  auto t = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
+  const std::lock_guard<std::mutex> lock(cache_mutex_);
+  targets_[candidate] = t;
+  return t;
+}
+
+std::optional<WindowMatch3> SegSlam3d::confirm_pending(SegParticle3& p, const SweepWindow& w,
+                                                       std::vector<MatchAttempt3>& attempts) {
+  const std::optional<PendingReentry> pending = std::exchange(p.pending, std::nullopt);
+  if (!pending || !segmap_.contains(pending->candidate)) return std::nullopt;
+  // Matched from where the pending re-entry puts the robot now, by a coarse search of twice
+  // the confirmation's tolerance (ICP alone from there fitted the structure less well: eq.
+  // 18 errors 0.07-0.11 m against 0.03-0.06 m), and the same tests.
+  const auto start = std::chrono::steady_clock::now();
+  const Pose4 predicted = pending->frame.compose(p.pose);
+  const Pose4 guess = pending->guess_frame.compose(p.pose);
+  MatchingOptions o = candidate_options(pending->candidate);
+  o.search_radius = 2 * options_.extras.wide.confirm_distance;
+  o.search_angle = 2 * options_.extras.wide.confirm_angle;
+  WindowMatch3 m = match_window(*target_of(pending->candidate), window_with_structure(w), predicted, o,
+                                options_.extras.structure);
+  m.translation = (m.pose.position() - guess.position()).norm();
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
+  if (m.ok && !confirms(predicted, m.pose, options_.extras.wide)) m.ok = false, m.weight = 0.0, m.rejection = "unconfirmed";
+  {
+    const std::lock_guard<std::mutex> lock(cache_mutex_);
+    stats_.matching_seconds += seconds_since(start);
+  }
+  if (options_.extras.record_attempts) {
+    MatchAttempt3 a = attempt_of(pending->candidate, guess,
+                                 distance_to_path(segmap_.at(pending->candidate), guess, options_.extras.proximity_height),
+                                 0.0, std::nullopt);
+    a.outcome = m.ok ? AttemptOutcome::kOffered : AttemptOutcome::kRejected;
+    a.pose = m.pose, a.rejection = m.rejection, a.confirmation = true;
+    a.guess_score = m.guess_score, a.coarse_score = m.coarse_score;
+    a.match_path_distance = distance_to_path(segmap_.at(pending->candidate), m.pose, options_.extras.proximity_height);
+    attempts.push_back(std::move(a));
+  }
+  if (!m.ok) return std::nullopt;
+  return m;
+}
+
+double SegSlam3d::error_since(std::size_t candidate) const {
+  return motion_error_sum_.at(last_update_) - motion_error_sum_.at(segmap_.at(candidate).interval.last_scan);
+}
+
+std::optional<MatchingOptions> SegSlam3d::wide_options(double chain_error) const {
+  // Deviation (wide_reentry.hpp): beyond the capped search, a second stage sized by eq. 18's
+  // sigma_tau, accepted only when one pose of it passes the tests (eq. 19's covariance term).
+  return wide_reach(options_.segslam.matching, chain_error, options_.extras.max_search_radius, options_.extras.wide);
+}
+
+std::vector<double> SegSlam3d::chain_errors(const std::vector<PlacedSubmap<Pose4>>& sample,
+                                            const SegParticle3& p) const {
+  // Sec. 4.5.2: "each transformation in the local map sampling process adds some
+  // uncertainty". A placed frame's is the eq. 13-14 error along the links that composed it:
+  // the particle's own in its open submap, then per link the error inside the submap the
+  // link's transform spans (a predecessor's entry-to-exit, or the submap left through its
+  // exit), none across a match (the same frame). A re-entry the particle took shortens the
+  // chain; the time since the candidate (candidate_reach's measure) does not see it, and with
+  // it the wide stage ran where the capped search sufficed.
+  const auto inside = [&](std::size_t id) {
+    const Interval& in = segmap_.at(id).interval;
+    return motion_error_sum_.at(in.last_scan) - motion_error_sum_.at(in.first_scan);
+  };
+  std::vector<double> out(sample.size(), p.motion_error);
+  for (std::size_t k = 1; k < sample.size(); ++k) {
+    const PlacedSubmap<Pose4>& s = sample[k];
+    double step = 0.0;
+    if (s.link == 0) step = inside(s.id);
+    if (s.link == 1) step = s.from == 0 ? p.motion_error : inside(sample[s.from].id);
+    out[k] = out[s.from] + step;
+  }
+  return out;
+}
+
+MatchEvent3 SegSlam3d::offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const {
+  MatchEvent3 e;
+  e.sweep = last_update_, e.candidate = candidate, e.weight = m.weight;
+  e.icp_error = m.icp_error, e.all_points_error = m.all_points_error;
+  e.translation = m.translation, e.pose = m.pose, e.guess = guess;
+  e.structure = m.structure;
+  std::tie(e.reference_sweep, e.reference) = nearest_path_pose(candidate, m.pose.position());
+  return e;
+}
+
+std::pair<std::size_t, Pose4> SegSlam3d::nearest_path_pose(std::size_t candidate, const Eigen::Vector3d& p) const {
+  double best = std::numeric_limits<double>::infinity();
+  std::pair<std::size_t, Pose4> out{0, Pose4{}};
+  // The candidate's ancestors share its frame (a match child copies its parent's).
+  for (std::size_t id = candidate; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) {
+    for (const auto& [sweep, q] : segmap_.at(id).path) {
+      const double d = (q.position() - p).norm();
+      if (d < best) best = d, out = {sweep, q};
+    }
+  }
+  return out;
+}
+
+MatchAttempt3 SegSlam3d::attempt_of(std::size_t candidate, const Pose4& guess, double path_distance,
+                                     double chain_error, const std::optional<MatchingOptions>& wide) const {
+  MatchAttempt3 a;
+  a.sweep = last_update_, a.candidate = candidate, a.guess = guess, a.path_distance = path_distance;
+  const MatchingOptions o = candidate_options(candidate);
+  a.proximity_radius = o.proximity_radius;
+  a.search_radius = o.search_radius;
+  a.search_angle = o.search_angle;
+  a.error_since = error_since(candidate);
+  a.chain_error = chain_error;
+  if (wide) {
+    a.wide_proximity_radius = wide->proximity_radius;
+    a.wide_search_radius = wide->search_radius;
+    a.wide_search_angle = wide->search_angle;
+  }
+  std::tie(a.reference_sweep, a.reference) = nearest_path_pose(candidate, guess.position());
+  for (std::size_t id = candidate; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) {
+    a.intervals.emplace_back(segmap_.at(id).interval.first_scan, segmap_.at(id).interval.last_scan);
+  }
+  return a;
+}
+
+}  // namespace lookahead::slam::segslam
