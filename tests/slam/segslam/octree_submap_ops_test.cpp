@@ -12,43 +12,14 @@
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
 #include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
+#include "garage_drive.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {
 
-// A short garage drive (the first 21 m) simulated once for every test here.
-const RangeLog3& garage_log() {
-  static const RangeLog3 log = [] {
-    World3 w = make_garage_world(1, 0.2);
-    w.route.resize(3);
-    return simulate_cave_crawler(w, {}, 1);
-  }();
-  return log;
-}
-
-// A map of sweeps [first, last] inserted at their true poses, in the world frame.
-EvidenceOctree map_of(const RangeLog3& log, std::size_t first, std::size_t last) {
-  EvidenceOctree map;
-  for (std::size_t i = first; i <= last; ++i) {
-    std::vector<Ray3> rays;
-    const Pose3& t = *log.sweeps[i].truth;
-    for (const Ray3& r : log.sweeps[i].rays) rays.push_back({t * r.origin, t * r.end, r.hit});
-    insert_rays(map, rays, {});
-  }
-  return map;
-}
-
-// The end points of sweeps [first, last] in the true level frame of the robot at `first`.
-SweepWindow window_of(const RangeLog3& log, std::size_t first, std::size_t last) {
-  const Pose3 to_start = Pose4::level_of(*log.sweeps[first].truth).level_pose3().inverse();
-  Points3 all;
-  for (std::size_t i = first; i <= last; ++i) {
-    for (const Ray3& r : log.sweeps[i].rays) {
-      if (r.hit && (r.end - r.origin).norm() < 15.0) all.push_back(to_start * (*log.sweeps[i].truth * r.end));
-    }
-  }
-  return make_sweep_window(all, 300, segslam3d_defaults().matching);
-}
+using test_data::garage_log;
+using test_data::map_of;
+using test_data::window_of;
 
 TEST(Pose4, ComposeInverseAndBetweenAreConsistent) {
   const Pose4 a{1.0, -2.0, 0.5, 2.8}, b{-0.3, 0.7, -1.0, 1.1};
