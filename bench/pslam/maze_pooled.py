@@ -6,21 +6,13 @@ resampled with replacement on each side, 5000 draws, fixed seed), the predicted 
 (mean, worst seed, seeds below 90 %), the look-ahead map left at the end right inside the
 building, and the longest prediction's wall time (what a latency setting must cover).
 Usage: maze_pooled.py OUT BASE RULE...   (SEEDS="1 2 ... 20" picks the seeds; default 1-20)"""
-import json
 import os
 import random
 import statistics as st
 import sys
 
-
-def load(folder, seeds):
-    runs = {}
-    for s in seeds:
-        path = os.path.join(folder, str(s), "run.json")
-        if os.path.exists(path):
-            with open(path) as f:
-                runs[s] = json.load(f)
-    return runs
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from summarize_maze_skips import runs as load  # noqa: E402  (seed folders' run.json)
 
 
 def bootstrap_change(times, base_times, draws=5000):

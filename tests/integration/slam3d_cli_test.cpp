@@ -91,6 +91,15 @@ TEST_F(Slam3dCli, SegslamConfigErrorsNameTheKey) {
   EXPECT_NE(r.output.find("icp_sigmaa"), std::string::npos) << r.output;
 }
 
+TEST_F(Slam3dCli, NegativeWideReentryRadiusIsRejectedWithItsValue) {
+  const Result r = run("garage --method segslam --max-sweeps 3 --wide-reentry-radius -3 --out " + dir.string(),
+                       dir / "log.txt");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("--wide-reentry-radius"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("-3"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "run.json"));
+}
+
 TEST_F(Slam3dCli, UnknownInputIsAnError) {
   const Result r = run("/nonexistent/place --out " + dir.string(), dir / "log.txt");
   EXPECT_NE(r.code, 0);
