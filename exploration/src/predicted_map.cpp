@@ -68,7 +68,7 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
     // seen since the frontiers were last found has an empty region (0 m^2 both ways), and
     // counting it as predicted skipped every frontier of kth_0510034869 at 10.8 s, ending
     // the mission at 7 % explored (README, reproduction 3).
-    return left_out(region_area(map, cluster, rule), rule) ? 1.0 : 0.0;
+    return region_area(map, cluster, rule).covered(rule.region_tolerance) ? 1.0 : 0.0;
   }
   // The frontier cluster's goal stands for the target cell f the predictor was given; the
   // goal of the same frontier moves a little as the map grows (1 m, as Mission's same goal).
@@ -116,15 +116,12 @@ RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const Front
   };
   std::unordered_set<std::int64_t> seen;
   std::deque<slam::CellIndex> open;
-  bool closed_by_prediction = false, closed_by_gap = false;
+  bool closed_by_prediction = false;
   const auto push = [&](slam::CellIndex c) {
     if (walkable(c)) {
       if (seen.insert(key(c)).second) open.push_back(c);
     } else if (!map.is_known(c) && wall(c)) {
       closed_by_prediction = true;  // an unknown cell that is a wall: a predicted one
-    } else if (!map.is_known(c)) {
-      const long dx = c.x - g.x, dy = c.y - g.y;
-      closed_by_gap = closed_by_gap || dx * dx + dy * dy <= r * r;  // not beyond the radius: in a gap
     }
   };
   const auto neighbours = [](slam::CellIndex c) {
@@ -142,8 +139,7 @@ RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const Front
     for (const slam::CellIndex n : neighbours(c)) push(n);
   }
   const double cell = map.resolution() * map.resolution();
-  return {static_cast<double>(predicted) * cell, static_cast<double>(unpredicted) * cell, closed_by_prediction,
-          closed_by_gap};
+  return {static_cast<double>(predicted) * cell, static_cast<double>(unpredicted) * cell, closed_by_prediction};
 }
 
 double PredictedMap::confidence(slam::CellIndex c) const {

@@ -169,38 +169,6 @@ TEST(PredictedMap, AGapInAWallClosesTheRegionWithWallGap) {
   EXPECT_GT(none.region_area(map, cluster, rule).unpredicted, 0.05);
 }
 
-// A wall seen at a grazing angle: the frontier is the free strip's edge, a wall one cell
-// beyond it has unknown cells between its beam end points. Its far side is unknown only in
-// those gaps: with skip_wall_slivers it is left out as the wall running through them; a
-// stale frontier (nothing unknown beyond it) is not, nor a frontier open beyond the gap.
-TEST(PredictedMap, AWallSliverIsLeftOutOnlyWhenAsked) {
-  slam::OccupancyGrid map;
-  FrontierCluster cluster;
-  for (int y = -30; y <= 50; ++y) {
-    map.add_log_odds({0, y}, -1000);
-    map.add_log_odds({-1, y}, -1000);
-    if (y >= 0 && y < 20) cluster.cells.push_back({0, y});
-    if (y % 3 != 0) map.add_log_odds({2, y}, 2000);  // the wall 0.1 m on, every third cell unseen
-  }
-  cluster.has_goal = true;
-  cluster.goal_y = 0.5;
-  const PredictedMap none;
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.3};
-  RegionArea a = none.region_area(map, cluster, rule);
-  EXPECT_TRUE(a.wall_sliver());
-  EXPECT_FALSE(left_out(a, rule));  // not without the option
-  rule.skip_wall_slivers = true;
-  EXPECT_TRUE(left_out(a, rule));
-  EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 1.0);
-  rule.wall_gap = 0.0;  // gaps open: the region leaks beyond the wall, not a sliver
-  a = none.region_area(map, cluster, rule);
-  EXPECT_GT(a.unpredicted, 0.5);
-  EXPECT_FALSE(a.wall_sliver());
-  EXPECT_FALSE(left_out(a, rule));
-  EXPECT_FALSE((RegionArea{0.0, 0.0, false, false}).wall_sliver());  // stale: nothing unknown
-  EXPECT_FALSE((RegionArea{0.0, 0.1, false, true}).wall_sliver());   // open beyond the gap
-}
-
 TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
   const PredictionAwareStrategy s(make_strategy("nearest"), 0.9);
   FrontierCluster a, b, c;

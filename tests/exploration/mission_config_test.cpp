@@ -192,11 +192,6 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(parse_error("lookahead:\n  targets_by_path: by_foot\n").field(), "lookahead.targets_by_path");
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_wall_gap: -0.5\n").file(), "my.yaml");
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  neighbours_last: true\n").file(), "my.yaml");  // needs a region
-  EXPECT_EQ(parse_error("lookahead:\n  skip_wall_slivers: maybe\n").value(), "maybe");
-  // Slivers are gaps of the region rule: without a region and a gap width there are none.
-  EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 5\n  skip_wall_slivers: true\n").file(), "my.yaml");
-  EXPECT_NO_THROW(parse_mission_options(
-      "lookahead:\n  skip_region_radius: 5\n  skip_region_wall_gap: 0.5\n  skip_wall_slivers: true\n", "x"));
   e = parse_error("slam:\n  prediction:\n    hit_ratio_threshold: high\n");
   EXPECT_EQ(e.line(), 3u);
   EXPECT_EQ(e.field(), "prediction.hit_ratio_threshold");

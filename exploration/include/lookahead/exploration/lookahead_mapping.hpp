@@ -47,14 +47,10 @@ struct LookaheadOptions {
   bool neighbours_last = false;
   /// With skip_region_radius: unknown gaps up to this wide in a wall close the region [m].
   double skip_region_wall_gap = 0.0;
-  /// With skip_region_wall_gap: also skip wall slivers, frontiers whose unknown far side lies
-  /// entirely within such gaps (SkipRule::skip_wall_slivers).
-  bool skip_wall_slivers = false;
   /// The rule of the options above.
   [[nodiscard]] SkipRule skip_rule() const {
     return {skip_confidence, skip_predicted_targets, skip_region_radius, predictor.min_predicted_area,
-            predictor.features.occupied_threshold, neighbours_last, skip_region_wall_gap,
-            skip_wall_slivers};
+            predictor.features.occupied_threshold, neighbours_last, skip_region_wall_gap};
   }
   /// Frontiers predicted per target selection: the chosen target first, then the nearest
   /// other frontier goals (the paper's extension "predict several possible targets",

@@ -27,10 +27,6 @@ struct SkipRule {
   /// With region_radius: unknown gaps up to this wide in a wall (explored or predicted)
   /// close the region as the wall would [m]; 0: only unbroken walls close it.
   double wall_gap = 0.0;
-  /// With region_radius and wall_gap: a frontier whose unknown far side lies entirely in
-  /// such gaps (a wall sliver: its region is empty only because the gap test closed it) is
-  /// left out too, as the wall predicted to run through the gap.
-  bool skip_wall_slivers = false;
 };
 
 /// A frontier's unexplored region (PredictedMap::region_area) [m^2].
@@ -38,25 +34,15 @@ struct RegionArea {
   double predicted = 0.0;    ///< by a hypothesis with the minimum Psi
   double unpredicted = 0.0;  ///< what driving there would still reveal
   bool closed_by_prediction = false;  ///< a predicted wall bounds it
-  bool closed_by_gap = false;  ///< an unknown cell of it was left out as part of a wall gap
   /// Something of it is predicted: a predicted part or a predicted wall closing it. An
   /// empty region (the far side already seen) is not left out by any prediction.
   [[nodiscard]] bool touched_by_prediction() const { return predicted > 0 || closed_by_prediction; }
   /// Left out by look-ahead mapping: touched by a prediction, and at most `tolerance` of it
   /// is not predicted [m^2].
   [[nodiscard]] bool covered(double tolerance) const { return touched_by_prediction() && unpredicted <= tolerance; }
-  /// Nothing of it is open: its far side is unknown only within wall gaps (a wall seen at a
-  /// grazing angle, a corner seen from afar). Not an empty region of a stale frontier, whose
-  /// far side was seen since (nothing unknown at all).
-  [[nodiscard]] bool wall_sliver() const { return predicted == 0 && unpredicted == 0 && closed_by_gap; }
   /// Part of it is predicted, more than `tolerance` of it is not [m^2].
   [[nodiscard]] bool partly_predicted(double tolerance) const { return predicted > 0 && unpredicted > tolerance; }
 };
-
-/// Does the rule leave out the frontier whose region this is?
-[[nodiscard]] inline bool left_out(const RegionArea& region, const SkipRule& rule) {
-  return region.covered(rule.region_tolerance) || (rule.skip_wall_slivers && region.wall_sliver());
-}
 
 class PredictedMap {
  public:
