@@ -150,6 +150,18 @@ GoalDistance Mission::prediction_order(const std::vector<FrontierCluster>& clust
   return path_cost_from(costmap_, estimate(), clusters);
 }
 
+SkipRule Mission::skip_rule() const {
+  SkipRule rule = options_.lookahead.skip_rule();
+  if (options_.lookahead.known_boundary) {
+    // The simulator's world is the building: its extent is the boundary the paper's Fig. 7(d)
+    // assumes known (for the maze, the outside of its outer wall).
+    const Eigen::Vector2d lo = world_.origin();
+    rule.boundary = SkipRule::Extent{lo.x(), lo.y(), lo.x() + world_.width() * world_.resolution(),
+                                     lo.y() + world_.height() * world_.resolution()};
+  }
+  return rule;
+}
+
 std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x, double goal_y) {
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(map());
   const TargetList targets = selection_targets(clusters, goal_x, goal_y, prediction_order(clusters),
@@ -166,7 +178,7 @@ void Mission::predict_while_idle() {
   const slam::OccupancyGrid& m = map();
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(m);
   const TargetList targets = unpredicted_frontier_targets(
-      clusters, m, lookahead_->predicted(), options_.lookahead.skip_rule(), options_.lookahead.skip_share,
+      clusters, m, lookahead_->predicted(), skip_rule(), options_.lookahead.skip_share,
       predicted_targets_, time_, prediction_order(clusters), options_.lookahead.targets_per_selection);
   if (targets.empty()) return;
   for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
@@ -285,7 +297,7 @@ bool Mission::goal_predicted() const {
   for (const FrontierCluster& f : frontiers_.clusters(m)) {
     if (!f.has_goal || std::hypot(f.goal_x - goal_->x, f.goal_y - goal_->y) > kSameGoalRadius) continue;
     const bool covered =
-        lookahead_->predicted().covered_share(m, f, options_.lookahead.skip_rule()) >= options_.lookahead.skip_share;
+        lookahead_->predicted().covered_share(m, f, skip_rule()) >= options_.lookahead.skip_share;
     if (covered) spdlog::debug("t {:.1f}: goal ({:.2f}, {:.2f}) dropped: predicted on the way", time_, goal_->x, goal_->y);
     return covered;
   }
@@ -300,7 +312,7 @@ SelectionInputs Mission::selection_inputs() {
   in.gain_line_of_sight = options_.gain_line_of_sight;
   if (lookahead_) {
     in.predicted = &lookahead_->predicted();
-    in.skip = options_.lookahead.skip_rule();
+    in.skip = skip_rule();
   }
   return in;
 }

@@ -109,9 +109,16 @@ RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const Front
         if (dx * dx + dy * dy <= gap * gap && (dx != 0 || dy != 0) && wall({c.x + dx, c.y + dy})) return true;
     return false;
   };
+  const auto inside = [&](slam::CellIndex c) {
+    if (!rule.boundary) return true;
+    double x, y;
+    map.cell_center(c, x, y);
+    return x >= rule.boundary->min_x && x <= rule.boundary->max_x && y >= rule.boundary->min_y &&
+           y <= rule.boundary->max_y;
+  };
   const auto walkable = [&](slam::CellIndex c) {
     const long dx = c.x - g.x, dy = c.y - g.y;
-    if (dx * dx + dy * dy > r * r || map.is_known(c) || wall(c)) return false;
+    if (dx * dx + dy * dy > r * r || map.is_known(c) || wall(c) || !inside(c)) return false;
     return gap == 0 || !in_gap(c);
   };
   std::unordered_set<std::int64_t> seen;

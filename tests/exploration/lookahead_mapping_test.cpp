@@ -169,6 +169,33 @@ TEST(PredictedMap, AGapInAWallClosesTheRegionWithWallGap) {
   EXPECT_GT(none.region_area(map, cluster, rule).unpredicted, 0.05);
 }
 
+// A frontier facing the unseen outside of the building: its region leaks beyond the outer
+// wall, where nothing can be predicted, unless the boundary is known (P-SLAM Fig. 7(d)).
+TEST(PredictedMap, AKnownBoundaryEndsTheRegion) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  for (int y = -30; y <= 50; ++y) {  // an explored strip at x = -0.05..0.05, its middle 1 m the frontier
+    map.add_log_odds({0, y}, -1000);
+    map.add_log_odds({-1, y}, -1000);
+    if (y >= 0 && y < 20) cluster.cells.push_back({0, y});
+  }
+  cluster.has_goal = true;
+  cluster.goal_y = 0.5;
+  PredictedMap pm;
+  pm.add(hypothesis(0.05, 0.5, 0.7, -1000));  // the building's inside, up to x = 0.5, predicted
+  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0};
+  const RegionArea open = pm.region_area(map, cluster, rule);
+  EXPECT_GT(open.unpredicted, 0.5);  // beyond x = 0.5: never predictable
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, rule), 0.0);
+  rule.boundary = SkipRule::Extent{-5.0, 0.0, 0.5, 1.0};  // the building ends at x = 0.5, y = 0 and 1
+  const RegionArea closed = pm.region_area(map, cluster, rule);
+  EXPECT_LT(closed.unpredicted, 0.1);
+  EXPECT_NEAR(closed.predicted, open.predicted, 1e-9);  // the inside is the same
+  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, rule), 1.0);
+  const PredictedMap none;  // a boundary alone predicts nothing: the region is not left out
+  EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
+}
+
 TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
   const PredictionAwareStrategy s(make_strategy("nearest"), 0.9);
   FrontierCluster a, b, c;

@@ -192,6 +192,8 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(parse_error("lookahead:\n  targets_by_path: by_foot\n").field(), "lookahead.targets_by_path");
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_wall_gap: -0.5\n").file(), "my.yaml");
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  neighbours_last: true\n").file(), "my.yaml");  // needs a region
+  EXPECT_EQ(parse_error("lookahead:\n  known_boundary: yes please\n").field(), "lookahead.known_boundary");
+  EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  known_boundary: true\n").file(), "my.yaml");  // needs a region
   e = parse_error("slam:\n  prediction:\n    hit_ratio_threshold: high\n");
   EXPECT_EQ(e.line(), 3u);
   EXPECT_EQ(e.field(), "prediction.hit_ratio_threshold");

@@ -47,6 +47,11 @@ struct LookaheadOptions {
   bool neighbours_last = false;
   /// With skip_region_radius: unknown gaps up to this wide in a wall close the region [m].
   double skip_region_wall_gap = 0.0;
+  /// With skip_region_radius: the environment's outer boundary is known, as in P-SLAM's
+  /// Fig. 7(d) ("assuming that the environmental boundary is known"): the region of a
+  /// frontier by the outer wall does not leak beyond it, where nothing can be predicted.
+  /// The mission takes the boundary from the world's extent.
+  bool known_boundary = false;
   /// The rule of the options above.
   [[nodiscard]] SkipRule skip_rule() const {
     return {skip_confidence, skip_predicted_targets, skip_region_radius, predictor.min_predicted_area,

@@ -97,6 +97,8 @@ class Mission {
   void predict_while_idle();  ///< LookaheadOptions::predict_while_idle
   /// Which frontier goals are nearest for the prediction targets (LookaheadOptions::targets_by_path).
   [[nodiscard]] GoalDistance prediction_order(const std::vector<FrontierCluster>& clusters) const;
+  /// The look-ahead skip rule, with the world's extent as the known boundary when asked.
+  [[nodiscard]] SkipRule skip_rule() const;
   void refresh();
   void decide();
   bool need_new_path();

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -27,6 +28,12 @@ struct SkipRule {
   /// With region_radius: unknown gaps up to this wide in a wall (explored or predicted)
   /// close the region as the wall would [m]; 0: only unbroken walls close it.
   double wall_gap = 0.0;
+  /// With region_radius: the environment's boundary, when known (P-SLAM Fig. 7(d)): no
+  /// region reaches beyond it, where nothing can be explored or predicted [m].
+  struct Extent {
+    double min_x, min_y, max_x, max_y;
+  };
+  std::optional<Extent> boundary;
 };
 
 /// A frontier's unexplored region (PredictedMap::region_area) [m^2].
