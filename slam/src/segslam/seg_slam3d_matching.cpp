@@ -128,7 +128,8 @@ std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::
     if (c.interval.t_end > now - o.min_separation_s) continue;
     if (frame_root(segmap_, c)->interval == own_root->interval) continue;
     const Pose4 guess = sample[i].frame.inverse().compose(p.pose);
-    // The merged submap's path counts too: the robot stood there, and what it saw is in c.
+    // Deviation (3D only; 2D takes the parent's path): the merged submap's path counts too,
+    // since the robot stood there and what it saw is now in c.
     const double d = std::min(distance_to_path(c, guess, options_.extras.proximity_height),
                               distance_to_path(segmap_.at(sample[i].id), guess, options_.extras.proximity_height));
     const double radius = candidate_options(id).proximity_radius;
