@@ -152,6 +152,11 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
   j["pruned_submaps"] = st.pruned;
   j["live_submaps"] = f.segmap().live_count();
   j["segments"] = f.segmap().segment_count();
+  // Locking and merging (sec. 6; the `locking:` keys of --segslam-config, off by default).
+  j["locked_submaps"] = st.locked;
+  j["locked_particle_updates"] = st.locked_updates;  // particle steps without ray insertion
+  j["merged_submaps"] = st.merged;
+  j["submaps_with_maps"] = f.segmap().map_count();
   nlohmann::json events = nlohmann::json::array(), offers = nlohmann::json::array();
   for (const auto& e : st.match_events) events.push_back(match_json(e, log));
   for (const auto& e : st.match_offers) offers.push_back(match_json(e, log));
@@ -251,9 +256,11 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   j["segslam_parameters_yaml"] = slam::dump_segslam_options(options.segslam);
   std::ofstream(run.out + "/run.json") << j.dump(2) << "\n";
   if (j.contains("final_position_error_m")) {
-    spdlog::info("final position error {:.2f} m (dead reckoning {:.2f} m) over {:.0f} m; {} segmentations, {} matches",
+    spdlog::info("final position error {:.2f} m (dead reckoning {:.2f} m) over {:.0f} m; {} segmentations, {} matches "
+                 "({} locked, {} merged)",
                  j["final_position_error_m"].get<double>(), j["dead_reckoning_final_error_m"].get<double>(),
-                 j["path_length_m"].get<double>(), filter.statistics().segmentations, filter.statistics().matches);
+                 j["path_length_m"].get<double>(), filter.statistics().segmentations, filter.statistics().matches,
+                 filter.statistics().locked, filter.statistics().merged);
   }
   spdlog::info("filter {:.1f} s, offline search {:.1f} s, peak {:.0f} MB; wrote {}/trajectory.png and map.bt", wall,
                search_s, peak_memory_mb(), run.out);

@@ -81,6 +81,26 @@ TEST_F(Slam3dCli, SegslamWritesMapPictureAndRunJson) {
   EXPECT_EQ(j["sample_entropies"].size(), 2U);
 }
 
+// The `locking:` keys of --segslam-config reach the 3D filter, and run.json counts what
+// locking and merging did (a 12-sweep drive re-enters nothing: the counts are 0).
+TEST_F(Slam3dCli, SegslamReadsTheLockingKeysAndCountsLockedAndMerged) {
+  const fs::path yaml = dir / "lock.yaml";
+  std::ofstream(yaml) << "locking:\n  lock: true\n  lock_max_error: 0.07\n  merge: true\n  merge_max_error: 0.09\n";
+  const Result r = run("garage --method segslam --particles 2 --max-sweeps 12 --map-samples 1 --segslam-config '" +
+                           yaml.string() + "' --out " + dir.string(),
+                       dir / "log.txt");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "run.json"));
+  const std::string params = j["segslam_parameters_yaml"].get<std::string>();
+  for (const char* key : {"lock: true", "lock_max_error: 0.07", "merge: true", "merge_max_error: 0.09"}) {
+    EXPECT_NE(params.find(key), std::string::npos) << key << " in\n" << params;
+  }
+  for (const char* key : {"locked_submaps", "locked_particle_updates", "merged_submaps", "submaps_with_maps"}) {
+    ASSERT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["submaps_with_maps"].get<int>(), j["live_submaps"].get<int>() - j["merged_submaps"].get<int>());
+}
+
 TEST_F(Slam3dCli, SegslamConfigErrorsNameTheKey) {
   const fs::path yaml = dir / "bad.yaml";
   std::ofstream(yaml) << "matching:\n  icp_sigmaa: 1\n";

@@ -52,6 +52,25 @@ void walk(const NodeBase* n, int level, int x, int y, int z, const Visit& visit)
   }
 }
 
+// Walks `n` and, in step, the node `base` at the same place of another map (null where that
+// map holds nothing), skipping every node the two share; calls visit(brick, base brick, x, y,
+// z) for the bricks they do not.
+template <typename Visit>
+void walk_unshared(const NodeBase* n, const NodeBase* base, int level, int x, int y, int z, const Visit& visit) {
+  if (!n || n == base) return;
+  if (level == kInnerLevels) {
+    visit(static_cast<const Brick*>(n), static_cast<const Brick*>(base), x, y, z);
+    return;
+  }
+  const int bit = 15 - level;
+  const auto* inner = static_cast<const InnerNode*>(n);
+  const auto* other = static_cast<const InnerNode*>(base);
+  for (int i = 0; i < 8; ++i) {
+    walk_unshared(inner->child[i], other ? other->child[i] : nullptr, level + 1, x | ((i & 1) << bit),
+                  y | (((i >> 1) & 1) << bit), z | (((i >> 2) & 1) << bit), visit);
+  }
+}
+
 std::size_t node_bytes(int level) {
   return level == kInnerLevels ? sizeof(Brick) : sizeof(InnerNode);
 }
@@ -144,6 +163,19 @@ std::size_t EvidenceOctree::known_voxels() const {
     return true;
   });
   return n;
+}
+
+void EvidenceOctree::for_each_voxel_not_shared_with(
+    const EvidenceOctree& base, const std::function<void(const OctreeKey&, float, std::optional<float>)>& f) const {
+  walk_unshared(root_, base.root_, 0, 0, 0, 0, [&](const Brick* b, const Brick* other, int x, int y, int z) {
+    for (int v = 0; v < octree_detail::kBrickVoxels; ++v) {
+      if (!((b->known >> v) & 1U)) continue;
+      const OctreeKey k{static_cast<std::uint16_t>(x | (v & 3)), static_cast<std::uint16_t>(y | ((v >> 2) & 3)),
+                        static_cast<std::uint16_t>(z | ((v >> 4) & 3))};
+      const auto i = static_cast<std::size_t>(v);
+      f(k, b->log_odds[i], other && ((other->known >> v) & 1U) ? std::optional<float>(other->log_odds[i]) : std::nullopt);
+    }
+  });
 }
 
 void EvidenceOctree::update(const OctreeKey& k, bool hit) { OctreeWriter(*this).update(k, hit); }

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 #include "lookahead/slam/segslam/level_coarse_search.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
@@ -137,6 +139,20 @@ WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& w,
   m.ok = *m.rejection == '\0';
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
   return m;
+}
+
+void add_child_evidence(EvidenceOctree& into, const EvidenceOctree& child) {
+  if (into.grid().resolution() != child.grid().resolution()) {
+    throw std::invalid_argument("add_child_evidence: the child's voxel size differs from its parent's");
+  }
+  // Collected first: writing `into` while walking it beside the child would change the nodes
+  // the walk compares.
+  std::vector<std::pair<OctreeKey, float>> fresh;
+  child.for_each_voxel_not_shared_with(into, [&](const OctreeKey& k, float l, std::optional<float> parent) {
+    if (!parent) fresh.emplace_back(k, l);
+  });
+  OctreeWriter writer(into);
+  for (const auto& [k, l] : fresh) writer.set_log_odds(k, l);
 }
 
 void OctreeCanvas::paste(const EvidenceOctree& map, const Pose4& frame, const EvidenceOctree* parent) {

@@ -45,6 +45,7 @@ SegSlamOptions segslam3d_defaults() {
 struct SegSlam3d::Transition {
   bool closed_one = false;
   OctreeSubmap closed;
+  double closed_entry_error = 0.0;  ///< err_ICP of the match that opened `closed` (merging)
   std::size_t candidate = kNoSubmap;
   std::vector<MatchEvent3> offers;  ///< the matches offered; the one taken is `chosen`
   std::vector<MatchAttempt3> attempts;  ///< the candidates considered (record_attempts only)
@@ -179,11 +180,14 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
     next.entry = matches[draw.match].pose;
     next.parent = t.candidate;
     next.map = segmap_.at(t.candidate).map;  // copy-on-write: shares every brick until written
+    next.locked = locks_on_entry(matches[draw.match].icp_error, t.candidate);
   }
   next.exit = next.entry;
   next.path.push_back({last_update_, next.entry});
   t.closed_one = true;
   t.closed = std::move(p.submap);
+  t.closed_entry_error = p.entry_error;
+  p.entry_error = t.candidate == kNoSubmap ? std::numeric_limits<double>::infinity() : matches[draw.match].icp_error;
   p.submap = std::move(next);
   p.pose = p.submap.entry;
   p.submap_updates = 0;
@@ -199,7 +203,9 @@ void SegSlam3d::advance(SegParticle3& p, const SweepModel& s, std::mt19937_64& r
   std::vector<Eigen::Vector3d> world(s.ends.size());
   for (std::size_t k = 0; k < s.ends.size(); ++k) world[k] = after * s.ends[k];
   p.log_weight += options_.filter.weight_exponent * octree_log_likelihood(p.submap.map, world, options_.filter.likelihood);
-  insert_rays(p.submap.map, rays_at(after, s.rays), options_.filter.insert);
+  // A locked submap is localised in, never written (sec. 6): the particle keeps sharing the
+  // matched submap's octree, and skips the ray insertion that dominates the 3D step.
+  if (!p.submap.locked) insert_rays(p.submap.map, rays_at(after, s.rays), options_.filter.insert);
   p.submap.path.push_back({s.sweep, p.pose});
   p.submap.interval.last_scan = s.sweep;
   p.submap.interval.t_end = sweeps_[s.sweep].time;
@@ -257,6 +263,7 @@ void SegSlam3d::update(std::size_t k) {
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     if (!warm[i] && warm_count > 0) particles_[i].log_weight += sum / warm_count - gain[i];
   }
+  for (const SegParticle3& p : particles_) stats_.locked_updates += p.submap.locked ? 1 : 0;
   store_transitions(transitions);
   last_update_ = k;
   ++stats_.updates;
@@ -278,12 +285,15 @@ void SegSlam3d::store_transitions(std::vector<Transition>& transitions) {
       if (e.chosen) stats_.match_events.push_back(e);
     }
     if (!t.closed_one) continue;
-    particles_[i].submap.predecessor = segmap_.add(std::move(t.closed));
+    const std::size_t id = segmap_.add(std::move(t.closed));
+    particles_[i].submap.predecessor = id;
     if (t.candidate == kNoSubmap) {
       ++stats_.segmentations;
     } else {
       ++stats_.matches;
+      stats_.locked += particles_[i].submap.locked ? 1 : 0;
     }
+    merge_if_registered(id, t.closed_entry_error);
   }
 }
 

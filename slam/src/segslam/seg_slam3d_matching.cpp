@@ -117,26 +117,33 @@ std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::
   const std::vector<double> chain = chain_errors(sample, p);
   std::vector<Candidate> candidates;
   for (std::size_t i = 1; i < sample.size(); ++i) {
-    if (sample[i].id == skip) continue;  // a pending re-entry, confirmed
-    const OctreeSubmap& c = segmap_.at(sample[i].id);
+    // A merged submap's evidence is in its parent, which shares its frame (locking.merge:
+    // seg_slam3d_locking.cpp); the match is to the parent. Without merging, id is sample[i].id.
+    const std::size_t id = map_holder(sample[i].id);
+    if (id == skip) continue;  // a pending re-entry, confirmed
+    if (std::any_of(candidates.begin(), candidates.end(), [&](const Candidate& k) { return k.id == id; })) continue;
+    const OctreeSubmap& c = segmap_.at(id);
     // Sec. 4.5.1 winnowing as in 2D: temporal separation, not the particle's own frame,
     // and (Deviation, as in 2D) near the candidate's own path, here also in height.
     if (c.interval.t_end > now - o.min_separation_s) continue;
     if (frame_root(segmap_, c)->interval == own_root->interval) continue;
     const Pose4 guess = sample[i].frame.inverse().compose(p.pose);
-    const double d = distance_to_path(c, guess, options_.extras.proximity_height);
-    const double radius = candidate_options(sample[i].id).proximity_radius;
+    // Deviation (3D only; 2D takes the parent's path): the merged submap's path counts too,
+    // since the robot stood there and what it saw is now in c.
+    const double d = std::min(distance_to_path(c, guess, options_.extras.proximity_height),
+                              distance_to_path(segmap_.at(sample[i].id), guess, options_.extras.proximity_height));
+    const double radius = candidate_options(id).proximity_radius;
     const std::optional<MatchingOptions> wide = wide_options(chain[i]);
     const bool near = d <= radius && has_observed_near(c.map, guess.position(), radius);
     const bool near_wide = !near && wide && d <= wide->proximity_radius &&
                            has_observed_near(c.map, guess.position(), wide->proximity_radius);
     if (options_.extras.record_attempts) {
-      attempts.push_back(attempt_of(sample[i].id, guess, d, chain[i], wide));
+      attempts.push_back(attempt_of(id, guess, d, chain[i], wide));
       const bool far = d > (wide ? wide->proximity_radius : radius);
       attempts.back().outcome = near || near_wide ? AttemptOutcome::kNotNearest : far ? AttemptOutcome::kFar : AttemptOutcome::kUnobserved;
     }
     if (!near && !near_wide) continue;
-    candidates.push_back({near_wide, wide, d, sample[i].id, guess, attempts.size() - 1});
+    candidates.push_back({near_wide, wide, d, id, guess, attempts.size() - 1});
   }
   // Those within the capped reach first, as before the wide stage: it only fills free places.
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {

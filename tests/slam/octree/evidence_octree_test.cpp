@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <optional>
 #include <random>
 #include <thread>
 
@@ -70,6 +72,33 @@ TEST(EvidenceOctree, WrittenChildOwnsOnlyTheChangedPath) {
   EXPECT_EQ(m.unique_bytes, sizeof(octree_detail::Brick) + 14 * sizeof(octree_detail::InnerNode));
   EXPECT_EQ(m.total_bytes, parent.memory().total_bytes);
   EXPECT_EQ(EvidenceOctree::distinct_bytes({&parent, &child}), m.total_bytes + m.unique_bytes);
+}
+
+// What a copy wrote since it was made, without visiting what it still shares: every voxel of
+// a written brick (once), with the base's value where the base observed it.
+TEST(EvidenceOctree, VoxelsNotSharedWithTheBaseAreThoseOfWrittenBricks) {
+  EvidenceOctree parent;
+  for (int i = 0; i < 4000; i += 4) parent.update(key(i, 0, 0), true);  // 1000 bricks
+  EvidenceOctree child = parent;
+  int visited = 0;
+  child.for_each_voxel_not_shared_with(parent, [&](const OctreeKey&, float, std::optional<float>) { ++visited; });
+  EXPECT_EQ(visited, 0);  // an unwritten copy shares everything
+  child.update(key(0, 0, 0), false);    // a voxel the parent knew (brick 0)
+  child.update(key(1, 0, 0), true);     // one it did not, same brick
+  child.update(key(9000, 5, 5), true);  // one in a brick the parent never had
+  std::map<int, std::pair<float, std::optional<float>>> seen;
+  child.for_each_voxel_not_shared_with(parent, [&](const OctreeKey& k, float l, std::optional<float> base) {
+    EXPECT_TRUE(seen.emplace(k.x - 32768, std::make_pair(l, base)).second);
+  });
+  ASSERT_EQ(seen.size(), 3U);
+  EXPECT_EQ(seen.at(0).first, *child.log_odds(key(0, 0, 0)));
+  EXPECT_EQ(seen.at(0).second, parent.log_odds(key(0, 0, 0)));
+  EXPECT_FALSE(seen.at(1).second.has_value());
+  EXPECT_FALSE(seen.at(9000).second.has_value());
+  // Against an unrelated map, every voxel is visited.
+  int all = 0;
+  child.for_each_voxel_not_shared_with(EvidenceOctree{}, [&](const OctreeKey&, float, std::optional<float>) { ++all; });
+  EXPECT_EQ(static_cast<std::size_t>(all), child.known_voxels());
 }
 
 TEST(EvidenceOctree, CopiesWrittenFromTwoThreadsStayIndependent) {

@@ -64,6 +64,12 @@ class EvidenceOctree {
   /// Calls f(key, log_odds) for every observed voxel, in key order of the tree.
   void for_each_voxel(const std::function<void(const OctreeKey&, float)>& f) const;
   [[nodiscard]] std::size_t known_voxels() const;
+  /// Calls f(key, log_odds, base_log_odds) for every observed voxel of this map that lies in
+  /// a brick this map does not share with `base` (base_log_odds: nullopt where `base` never
+  /// observed the voxel). Subtrees both maps share are skipped without being visited, so for
+  /// a copy of `base` the cost is that of what was written since the copy (SegSLAM merging).
+  void for_each_voxel_not_shared_with(
+      const EvidenceOctree& base, const std::function<void(const OctreeKey&, float, std::optional<float>)>& f) const;
 
   // ---- writing ----
   /// One observation of a voxel: adds the hit or miss log-odds and clamps.

@@ -7,6 +7,7 @@
 //   predictive_score         eq. 17 on the look-ahead window
 //   has_observed_near        spatial-proximity winnowing (sec. 4.5.1)
 //   match_window             coarse search + point-to-plane ICP on binned points, eq. 18
+//   add_child_evidence       merging a re-entered submap into its parent (sec. 6)
 //   OctreeCanvas             a map sample's submaps in one octree, eq. 22 entropy
 #pragma once
 
@@ -88,6 +89,14 @@ WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& wi
 /// scores are left 0); tau and the eq. 18 weight are taken against `guess`.
 WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& seed,
                           const Pose4& guess, const MatchingOptions& options, const StructureTestOptions& structure = {});
+
+/// Sec. 6 merging, as the 2D add_child_evidence: adds to `into` (the parent) the voxels of
+/// `child` (a match copy of it, same frame) that `into` never observed, with the child's
+/// log-odds; voxels the parent observed keep the parent's evidence (the child's revisions of
+/// them are dropped: its copy started from them, so adding would count them twice). Bricks
+/// the child still shares with the parent are not visited. Throws std::invalid_argument when
+/// the voxel sizes differ.
+void add_child_evidence(EvidenceOctree& into, const EvidenceOctree& child);
 
 /// Submaps of a map sample summed into one set of voxels (independence: overlapping evidence
 /// adds, clamped to the map's bounds); a match child pasted after its parent adds only what

@@ -66,6 +66,14 @@ class SegMap {
     return true;
   }
 
+  /// The submap holding `id`'s evidence: `id` itself, or for a merged submap the parent its
+  /// evidence went into (same frame), followed while that is merged too. A match to a
+  /// merged submap is a match to this one.
+  [[nodiscard]] std::size_t map_holder(std::size_t id) const {
+    while (contains(id) && at(id).merged && contains(at(id).parent)) id = at(id).parent;
+    return id;
+  }
+
   /// The live members of the segment holding `id` (the submaps with its interval).
   [[nodiscard]] std::vector<std::size_t> segment_of(std::size_t id) const {
     const auto it = segments_.find(key(at(id).interval));

@@ -11,8 +11,9 @@
 // the octree operations are in octree_submap_ops.hpp.
 //
 // Deviation: the filter loop is a sibling of the 2D SegSlam class, not one template with it:
-// that class is written against laser scans and the 2D particle step and is being extended
-// (locking, merging) elsewhere; the graph code and the eq. 3/13-14/18 functions are shared.
+// that class is written against laser scans and the 2D particle step; the graph code, the
+// eq. 3/13-14/18 functions and SegMap::merge_into_parent are shared. Locking and merging
+// (sec. 6, the `locking:` options, off by default) follow the 2D filter: seg_slam3d_locking.cpp.
 // Submap frames are level (x, y, z, yaw), and proximity winnowing also bounds the height
 // difference (the garage's decks share x, y). A match is scored on the window's structure
 // points and vetoed when they land in the candidate's free space (structure_fit.hpp), and
@@ -23,6 +24,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -86,6 +88,8 @@ struct SegParticle3 {
   int submap_updates = 0;       ///< filter updates in the open submap
   double motion_error = 0.0;    ///< eq. 13-14, accumulated in the open submap [m]
   int updates_since_match = 0;  ///< since the last matching attempt
+  /// err_ICP of the match that opened the submap [m]; infinite for a fresh submap (locking).
+  double entry_error = std::numeric_limits<double>::infinity();
   /// A wide re-entry found at the last attempt, checked at the next one (wide_reentry.hpp).
   std::optional<PendingReentry> pending;
 };
@@ -115,6 +119,9 @@ struct SegSlam3dStatistics {
   std::size_t segmentations = 0, matches = 0, match_attempts = 0, pruned = 0;
   std::size_t match_requests = 0;  ///< candidate matches asked for; match_attempts of them searched
   std::size_t wide_attempts = 0;   ///< of match_attempts, wide searches (wide_reentry.hpp)
+  std::size_t locked = 0;          ///< re-entered submaps locked (localisation only, sec. 6)
+  std::size_t locked_updates = 0;  ///< particle updates in a locked submap (no ray insertion)
+  std::size_t merged = 0;          ///< closed re-entered submaps merged into their parent
   std::vector<double> neff;
   std::vector<MatchEvent3> match_events;  ///< the matches taken
   std::vector<MatchEvent3> match_offers;  ///< every match offered to a particle, taken or not
@@ -179,6 +186,11 @@ class SegSlam3d {
                                                  const SegParticle3& p) const;
   const SweepWindow& window_with_structure(const SweepWindow& w);
   void store_transitions(std::vector<Transition>& transitions);
+  // Locking and merging (sec. 6; seg_slam3d_locking.cpp).
+  [[nodiscard]] bool locks_on_entry(double entry_error, std::size_t candidate) const;
+  void merge_if_registered(std::size_t id, double entry_error);
+  /// The submap holding `id`'s evidence: `id` itself, or for a merged one its parent's.
+  [[nodiscard]] std::size_t map_holder(std::size_t id) const;
   void prune();
   [[nodiscard]] int thread_count() const;
 
