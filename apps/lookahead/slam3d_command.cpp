@@ -40,6 +40,7 @@ struct Slam3dArgs {
   int map_samples = -1;        ///< --method segslam: offline samples (-1: the config's)
   double max_search_radius = -1.0;  ///< --method segslam: reach cap (< 0: the default)
   double wide_reentry_radius = -1.0;  ///< --method segslam: wide search cap (0: off, < 0: the default)
+  int wide_retry_updates = -1;  ///< --method segslam: wait after a failed wide search (< 0: the default)
 };
 
 struct Input {
@@ -191,7 +192,7 @@ int run_slam3d(const Slam3dArgs& a) {
   const Input in = read_input(a, options);
   if (a.method == "segslam") {
     run_segslam3d({a.input, input_name(a.input), a.out, a.segslam_config, a.map_samples, a.data_seed,
-                   a.max_search_radius, a.wide_reentry_radius}, in.log, options);
+                   a.max_search_radius, a.wide_reentry_radius, a.wide_retry_updates}, in.log, options);
     if (in.world && a.input == "garage") slam::write_octomap(in.world->map, a.out + "/world.bt");
     return 0;
   }
@@ -244,7 +245,11 @@ Run add_slam3d_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--wide-reentry-radius", args->wide_reentry_radius,
                  "--method segslam: cap of the wide re-entry search beyond that reach [m], sized by eq. 18's "
-                 "sigma_tau and taken only when one pose of it fits (default 20; 0: off)")
+                 "sigma_tau and taken only when one pose of it fits (default 25; 0: off)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--wide-retry-updates", args->wide_retry_updates,
+                 "--method segslam: filter updates a candidate whose wide re-entry search found nothing waits "
+                 "before that particle searches it widely again (0: at every attempt)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--dump-config", args->dump_config, "print the documented default options and exit");
   return [args] { return run_slam3d(*args); };

@@ -110,7 +110,8 @@ nlohmann::json attempt_json(const slam::segslam::MatchAttempt3& a, const slam::R
                    {"confirmation", a.confirmation},
                    {"guess_score", a.guess_score},
                    {"coarse_score", a.coarse_score},
-                   {"reference_sweep", a.reference_sweep}};
+                   {"reference_sweep", a.reference_sweep},
+                   {"guess", {a.guess.x, a.guess.y, a.guess.z, a.guess.yaw}}};
   std::string truth;
   if (log.has_truth()) {
     const auto level = [&](std::size_t s) { return slam::Pose4::level_of(*log.sweeps.at(s).truth); };
@@ -149,6 +150,7 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
   j["match_requests"] = st.match_requests;
   j["wide_match_attempts"] = st.wide_attempts;
   j["matching_thread_s"] = st.matching_seconds;
+  j["wide_matching_thread_s"] = st.wide_matching_seconds;
   j["pruned_submaps"] = st.pruned;
   j["live_submaps"] = f.segmap().live_count();
   j["segments"] = f.segmap().segment_count();
@@ -200,6 +202,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   options.extras.record_attempts = spdlog::should_log(spdlog::level::debug);
   if (run.max_search_radius >= 0) options.extras.max_search_radius = run.max_search_radius;
   if (run.wide_reentry_radius >= 0) options.extras.wide.max_radius = run.wide_reentry_radius;
+  if (run.wide_retry_updates >= 0) options.extras.wide.retry_updates = run.wide_retry_updates;
   SegSlam3d filter(options);
   ProgressBar bar("segslam3d", log.sweeps.size());
   const auto start = std::chrono::steady_clock::now();
@@ -243,7 +246,8 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
                        {"angle_per_error_rad_per_m", wide.angle_per_error}, {"max_angle_rad", wide.max_angle},
                        {"peaks", wide.peaks}, {"separation_m", wide.separation},
                        {"angle_separation_rad", wide.angle_separation},
-                       {"confirm_distance_m", wide.confirm_distance}, {"confirm_angle_rad", wide.confirm_angle}};
+                       {"confirm_distance_m", wide.confirm_distance}, {"confirm_angle_rad", wide.confirm_angle},
+                       {"retry_updates", wide.retry_updates}};
   j["map_entropy_nats_m3"] = best_map.best.entropy;
   j["sample_entropies"] = best_map.entropies;
   j["map_known_voxels"] = best_map.best.map.known_voxels();

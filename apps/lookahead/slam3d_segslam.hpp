@@ -23,6 +23,8 @@ struct SegSlam3dRun {
   double max_search_radius = -1.0;
   /// Cap of the wide, unambiguous re-entry search [m] (wide_reentry.hpp); 0: off, < 0: the default.
   double wide_reentry_radius = -1.0;
+  /// Updates a candidate whose wide search found nothing waits before the next (wide_reentry.hpp); < 0: the default.
+  int wide_retry_updates = -1;
 };
 
 /// segslam3d_defaults() as YAML (config/segslam/garage3d.yaml).

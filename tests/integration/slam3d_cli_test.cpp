@@ -120,6 +120,15 @@ TEST_F(Slam3dCli, NegativeWideReentryRadiusIsRejectedWithItsValue) {
   EXPECT_FALSE(fs::exists(dir / "run.json"));
 }
 
+TEST_F(Slam3dCli, NegativeWideRetryUpdatesIsRejectedWithItsValue) {
+  const Result r = run("garage --method segslam --max-sweeps 3 --wide-retry-updates -4 --out " + dir.string(),
+                       dir / "log.txt");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("--wide-retry-updates"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("-4"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "run.json"));
+}
+
 TEST_F(Slam3dCli, UnknownInputIsAnError) {
   const Result r = run("/nonexistent/place --out " + dir.string(), dir / "log.txt");
   EXPECT_NE(r.code, 0);

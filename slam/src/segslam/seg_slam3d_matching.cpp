@@ -80,13 +80,17 @@ std::vector<WindowMatch3> SegSlam3d::match_candidates(SegParticle3& p, const Swe
     // The wide stage where the capped search found nothing and the candidate's uncertainty
     // reaches beyond it; for the nearest such candidate only (its cost: the stage ran for
     // every candidate at first, and 10 particles took 5-8 times main's time).
-    const bool wide = !m.ok && !wide_searched && c.wide.has_value();
+    // A candidate whose last wide search found nothing waits (WideReentryOptions::retry_updates).
+    const bool backed_off = !m.ok && c.wide.has_value() && !p.wide_backoff.allows(c.id, last_update_);
+    const bool wide = !m.ok && !wide_searched && c.wide.has_value() && !backed_off;
     if (wide) m = cached_match(c.id, c.guess, w, &*c.wide), wide_searched = true;
+    if (backed_off && c.wide_only) m.rejection = "backed off";
     // A wide pose farther from this particle's guess than the reach (the search started from
     // a rounded guess, and ICP moves) is outside the region its uncertainty allows. (10
     // particles, seed 1, sweep 287: 12.2 m from guesses 0.2-0.7 m off the truth, reach 11.3 m,
     // an alias one column spacing off, confirmed once and taken.)
     if (wide && m.ok && m.translation > c.wide->search_radius) m.ok = false, m.weight = 0.0, m.rejection = "beyond reach";
+    if (wide && !m.ok) p.wide_backoff.failed(c.id, last_update_, options_.extras.wide.retry_updates);
     if (record) {
       MatchAttempt3& a = attempts[c.attempt];
       a.outcome = !m.ok ? AttemptOutcome::kRejected : wide ? AttemptOutcome::kPending : AttemptOutcome::kOffered;
@@ -200,8 +204,9 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
       match_cache_.emplace(key, m);
     }
     ++stats_.match_attempts;
-    if (wide) ++stats_.wide_attempts;
-    stats_.matching_seconds += seconds_since(start);
+    const double seconds = seconds_since(start);
+    if (wide) ++stats_.wide_attempts, stats_.wide_matching_seconds += seconds;
+    stats_.matching_seconds += seconds;
   }
   m.translation = (m.pose.position() - guess.position()).norm();
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "lookahead/slam/octree/ray_insertion.hpp"
@@ -100,5 +102,55 @@ TEST(NearOccupiedField, BoundLevelsHoldWhetherAnyVoxelOfTheirBoxIsNearInThePlane
   EXPECT_EQ(field.near_in_plane(0, grid.axis_key(p.x()), grid.axis_key(p.y()), grid.axis_key(p.z())), field.near_in_plane(p));
 }
 
+
+// The peaks of the wide re-entry search (its passes share their block scores) against their
+// definition by brute force: every grid pose scored, then greedily the best (ties to the first
+// in (yaw, x, y) order) apart from every earlier peak, scoring above 0.
+TEST(LevelCoarseSearch, PeaksAreTheGreedyExhaustivePeaksBitForBit) {
+  const Scene& s = scene();
+  const NearOccupiedField field(s.map, level_bound_widths(0.3, s.map.grid().resolution()));
+  const double separation = 1.5, angle_separation = 0.15;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> off(-3.0, 3.0), turn(-0.4, 0.4);
+  for (int k = 0; k < 4; ++k) {
+    const LevelPoseGrid g{k % 2 == 0 ? 3.0 : 2.4, 0.3, 0.3, 0.05};
+    const Pose4 guess = s.truth.compose({off(rng), off(rng), 0.0, turn(rng)});
+    const int n = static_cast<int>(g.radius / g.step), na = static_cast<int>(g.angle / g.angle_step);
+    struct Scored {
+      int a, i, j, score;
+    };
+    std::vector<Scored> all;
+    for (int a = -na; a <= na; ++a) {
+      for (int i = -n; i <= n; ++i) {
+        for (int j = -n; j <= n; ++j) {
+          const Pose4 p{guess.x + i * g.step, guess.y + j * g.step, guess.z, normalize_angle(guess.yaw + a * g.angle_step)};
+          all.push_back({a, i, j, near_in_plane_count(field, p, s.window.scored)});
+        }
+      }
+    }
+    std::vector<Scored> expected;
+    while (expected.size() < 4) {
+      const Scored* best = nullptr;
+      for (const Scored& c : all) {
+        const bool apart = std::all_of(expected.begin(), expected.end(), [&](const Scored& e) {
+          return std::hypot(c.i - e.i, c.j - e.j) * g.step > separation || std::abs(c.a - e.a) * g.angle_step > angle_separation;
+        });
+        if (apart && c.score > (best ? best->score : 0)) best = &c;
+      }
+      if (!best) break;
+      expected.push_back(*best);
+    }
+    const auto peaks = level_search_peaks(field, s.window.scored, guess, g, 4, separation, angle_separation);
+    ASSERT_EQ(peaks.size(), expected.size()) << k;
+    for (std::size_t m = 0; m < peaks.size(); ++m) {
+      EXPECT_EQ(peaks[m].score, expected[m].score) << k << ", peak " << m;
+      EXPECT_EQ(peaks[m].pose.x, guess.x + expected[m].i * g.step) << k << ", peak " << m;
+      EXPECT_EQ(peaks[m].pose.y, guess.y + expected[m].j * g.step) << k << ", peak " << m;
+      EXPECT_EQ(peaks[m].pose.yaw, normalize_angle(guess.yaw + expected[m].a * g.angle_step)) << k << ", peak " << m;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lookahead::slam::segslam
+

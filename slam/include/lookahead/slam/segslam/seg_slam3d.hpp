@@ -92,6 +92,8 @@ struct SegParticle3 {
   double entry_error = std::numeric_limits<double>::infinity();
   /// A wide re-entry found at the last attempt, checked at the next one (wide_reentry.hpp).
   std::optional<PendingReentry> pending;
+  /// The candidates its wide searches found nothing for, waiting to be searched again.
+  WideBackoff wide_backoff;
 };
 
 /// One match a particle was offered (and, if `chosen`, took): enough to check it against
@@ -127,6 +129,7 @@ struct SegSlam3dStatistics {
   std::vector<MatchEvent3> match_offers;  ///< every match offered to a particle, taken or not
   std::vector<MatchAttempt3> attempts;    ///< every candidate considered (record_attempts only)
   double matching_seconds = 0;  ///< summed over threads: building targets, coarse search, ICP
+  double wide_matching_seconds = 0;  ///< of matching_seconds, the wide searches' (wide_reentry.hpp)
 };
 
 class SegSlam3d {

@@ -33,6 +33,8 @@
 
 #include <cstddef>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "lookahead/slam/geometry/pose4.hpp"
 #include "lookahead/slam/segslam/octree_submap_ops.hpp"
@@ -69,6 +71,28 @@ struct WideReentryOptions {
   /// predicted one [m], [rad].
   double confirm_distance = 0.5;
   double confirm_angle = 0.08;
+  /// After a wide search of a candidate found nothing, the particle searches that candidate
+  /// widely again only this many filter updates later; 0 at every attempt. >= 0.
+  /// Deviation (not in the paper, whose localisation filter runs once per re-entry decision):
+  /// on the garage loop the stage searched the same candidate at every attempt, 4 updates
+  /// (about 4 m of travel) apart, most of them failing while the robot was still 4-20 m from
+  /// the candidate's mapped area (1 particle, seed 1: 18 wide searches of one candidate, all
+  /// failed); the region a search covers (3 sigma_tau, 12-25 m) moves little between attempts.
+  int retry_updates = 0;
+};
+
+/// A particle's wide searches that found nothing, per candidate: the update from which that
+/// candidate may be searched widely again (WideReentryOptions::retry_updates).
+class WideBackoff {
+ public:
+  /// May `candidate` be searched widely at update `now`?
+  [[nodiscard]] bool allows(std::size_t candidate, std::size_t now) const;
+  /// A wide search of `candidate` at update `now` found nothing: wait `retry_updates` (the
+  /// entries whose wait is over are dropped, so the list stays a few candidates long).
+  void failed(std::size_t candidate, std::size_t now, int retry_updates);
+
+ private:
+  std::vector<std::pair<std::size_t, std::size_t>> until_;  ///< (candidate, first update allowed)
 };
 
 /// An unambiguous wide match waiting for the next attempt's confirmation: the frames of the
@@ -104,7 +128,8 @@ std::optional<MatchingOptions> wide_reach(const MatchingOptions& base, double er
 /// The wide search: up to `wide.peaks` distinct coarse peaks around `guess` within `options`'
 /// reach, each refined by ICP and put to match_window's tests. The result is the one passing
 /// pose when exactly one distinct pose passes; with two or more it is rejected as
-/// "ambiguous"; with none it is the best peak's failed match. `modes` counts the passing ones.
+/// "ambiguous"; with none it is the best peak's failed match. `modes` counts the passing ones
+/// (2 when ambiguous: the peaks after the second passing pose are not refined).
 WindowMatch3 match_window_unambiguous(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& guess,
                                       const MatchingOptions& options, const StructureTestOptions& structure,
                                       const WideReentryOptions& wide);
