@@ -8,19 +8,15 @@ OUT/summary.json next to printing the table.
 
 usage: bench/seg3d/ab_table.py OUT [LABEL_A LABEL_B]
 """
-import glob
 import json
 import os
 import statistics as st
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pair_table import runs  # noqa: E402  (run.json by method, particles, seed)
 
-def runs(folder):
-    r = {}
-    for f in glob.glob(os.path.join(folder, '*p*-s*/run.json')):
-        j = json.load(open(f))
-        r[(j.get('method', 'rbpf'), j['particles'], j['seed'])] = j
-    return r
+
 
 
 def main(out, la='A', lb='B'):

@@ -8,19 +8,15 @@ per run) and memory. Writes OUT/lock_summary.json with every run's numbers.
 
 usage: bench/seg3d/lock_table.py OUT
 """
-import glob
 import json
 import os
 import statistics as st
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pair_table import runs  # noqa: E402  (run.json by method, particles, seed)
 
-def runs(folder):
-    r = {}
-    for f in glob.glob(os.path.join(folder, '*p*-s*/run.json')):
-        j = json.load(open(f))
-        r[(j.get('method', 'rbpf'), j['particles'], j['seed'])] = j
-    return r
+
 
 
 def main(out):
