@@ -97,7 +97,7 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   }
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
-  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0};  // region: 0.5 m round the goal
+  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt};  // region: 0.5 m round the goal
   PredictedMap none;
   EXPECT_NEAR(none.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.39, 0.03);  // the half disc
   EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
@@ -108,7 +108,7 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   PredictedMap free_region;
   free_region.add(hypothesis(0.05, 1.0, 0.7, -1000));
   EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, rule), 1.0);
-  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, {0.8, false, 0.5, 0.1, 0.65, false, 0.0}), 0.0);  // Psi too low
+  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, {0.8, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt}), 0.0);  // Psi too low
   PredictedMap wall;
   wall.add(hypothesis(0.05, 0.1, 0.7, 2000));  // a wall right beyond the frontier closes it
   EXPECT_LT(wall.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.01);
@@ -118,7 +118,7 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   EXPECT_FALSE(none.borders_prediction(map, cluster, rule));
   EXPECT_TRUE(part.borders_prediction(map, cluster, rule));
   EXPECT_FALSE(free_region.borders_prediction(map, cluster, rule));
-  EXPECT_FALSE(part.borders_prediction(map, cluster, {0.6, false, 0.0, 0.1, 0.65, false, 0.0}));
+  EXPECT_FALSE(part.borders_prediction(map, cluster, {0.6, false, 0.0, 0.1, 0.65, false, 0.0, std::nullopt}));
   const RegionArea a = part.region_area(map, cluster, rule);
   EXPECT_NEAR(a.predicted + a.unpredicted, 0.39, 0.03);  // the half disc, split
   EXPECT_GT(a.predicted, 0.05);
@@ -136,7 +136,7 @@ TEST(PredictedMap, AnEmptyRegionIsNotCoveredByPrediction) {
   for (int y = 0; y < 20; ++y) cluster.cells.push_back({0, y});  // a stale frontier
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
-  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0};
+  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt};
   PredictedMap none;
   const RegionArea a = none.region_area(map, cluster, rule);
   EXPECT_DOUBLE_EQ(a.predicted + a.unpredicted, 0.0);
@@ -162,7 +162,7 @@ TEST(PredictedMap, AGapInAWallClosesTheRegionWithWallGap) {
   for (int y = -30; y <= 50; ++y)
     if (y < 9 || y > 11) map.add_log_odds({5, y}, 2000);
   const PredictedMap none;
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0};
+  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt};
   EXPECT_GT(none.region_area(map, cluster, rule).unpredicted, 1.0);  // the far side of the wall too
   rule.wall_gap = 0.3;
   EXPECT_LT(none.region_area(map, cluster, rule).unpredicted, 0.5);  // only the strip before it
@@ -183,7 +183,7 @@ TEST(PredictedMap, AKnownBoundaryEndsTheRegion) {
   cluster.goal_y = 0.5;
   PredictedMap pm;
   pm.add(hypothesis(0.05, 0.5, 0.7, -1000));  // the building's inside, up to x = 0.5, predicted
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0};
+  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt};
   const RegionArea open = pm.region_area(map, cluster, rule);
   EXPECT_GT(open.unpredicted, 0.5);  // beyond x = 0.5: never predictable
   EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, rule), 0.0);

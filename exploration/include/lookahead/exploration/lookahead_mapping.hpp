@@ -55,7 +55,7 @@ struct LookaheadOptions {
   /// The rule of the options above.
   [[nodiscard]] SkipRule skip_rule() const {
     return {skip_confidence, skip_predicted_targets, skip_region_radius, predictor.min_predicted_area,
-            predictor.features.occupied_threshold, neighbours_last, skip_region_wall_gap};
+            predictor.features.occupied_threshold, neighbours_last, skip_region_wall_gap, std::nullopt};
   }
   /// Frontiers predicted per target selection: the chosen target first, then the nearest
   /// other frontier goals (the paper's extension "predict several possible targets",
