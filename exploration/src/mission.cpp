@@ -152,6 +152,7 @@ GoalDistance Mission::prediction_order(const std::vector<FrontierCluster>& clust
 
 SkipRule Mission::skip_rule() const {
   SkipRule rule = options_.lookahead.skip_rule();
+  rule.free = options_.free_threshold;  // undecided cells, for wall slivers: as the frontier detector reads them
   if (options_.lookahead.known_boundary) {
     // The simulator's world is the building: its extent is the boundary the paper's Fig. 7(d)
     // assumes known (for the maze, the outside of its outer wall).

@@ -82,6 +82,8 @@ void MissionOptions::validate() const {
   require(lookahead.skip_region_wall_gap >= 0, "lookahead.skip_region_wall_gap >= 0");
   require(!lookahead.known_boundary || lookahead.skip_region_radius > 0,
           "lookahead.known_boundary needs lookahead.skip_region_radius > 0");
+  require(!lookahead.skip_wall_slivers || lookahead.skip_region_radius > 0,
+          "lookahead.skip_wall_slivers needs lookahead.skip_region_radius > 0");
   require(lookahead.repredict_after > 0, "lookahead.repredict_after > 0");
   require(lookahead.skip_confidence >= 0 && lookahead.skip_confidence <= 1, "lookahead.skip_confidence in [0, 1]");
   require(lookahead.skip_region_radius >= 0, "lookahead.skip_region_radius >= 0");

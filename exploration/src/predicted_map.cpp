@@ -68,7 +68,7 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
     // seen since the frontiers were last found has an empty region (0 m^2 both ways), and
     // counting it as predicted skipped every frontier of kth_0510034869 at 10.8 s, ending
     // the mission at 7 % explored (README, reproduction 3).
-    return region_area(map, cluster, rule).covered(rule.region_tolerance) ? 1.0 : 0.0;
+    return left_out(region_area(map, cluster, rule), rule) ? 1.0 : 0.0;
   }
   // The frontier cluster's goal stands for the target cell f the predictor was given; the
   // goal of the same frontier moves a little as the map grows (1 m, as Mission's same goal).
@@ -116,19 +116,29 @@ RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const Front
     return x >= rule.boundary->min_x && x <= rule.boundary->max_x && y >= rule.boundary->min_y &&
            y <= rule.boundary->max_y;
   };
+  // Unexplored: never seen, and with the sliver rule also seen but undecided, as the frontier
+  // detector counts it (a band of such cells alone makes a frontier).
+  const int free_from = rule.skip_wall_slivers ? raw_at_least(rule.free) : occupied;
+  const auto unexplored = [&](slam::CellIndex c) {
+    const int l = map.raw_log_odds(c);
+    return l == slam::GridTile::kUnknown || (l >= free_from && l < occupied);
+  };
   const auto walkable = [&](slam::CellIndex c) {
     const long dx = c.x - g.x, dy = c.y - g.y;
-    if (dx * dx + dy * dy > r * r || map.is_known(c) || wall(c) || !inside(c)) return false;
+    if (dx * dx + dy * dy > r * r || !unexplored(c) || wall(c) || !inside(c)) return false;
     return gap == 0 || !in_gap(c);
   };
   std::unordered_set<std::int64_t> seen;
   std::deque<slam::CellIndex> open;
-  bool closed_by_prediction = false;
+  bool closed_by_prediction = false, closed_by_gap = false;
   const auto push = [&](slam::CellIndex c) {
     if (walkable(c)) {
       if (seen.insert(key(c)).second) open.push_back(c);
     } else if (!map.is_known(c) && wall(c)) {
       closed_by_prediction = true;  // an unknown cell that is a wall: a predicted one
+    } else if (unexplored(c)) {
+      const long dx = c.x - g.x, dy = c.y - g.y;
+      closed_by_gap = closed_by_gap || dx * dx + dy * dy <= r * r;  // within the radius: a gap, or the boundary
     }
   };
   const auto neighbours = [](slam::CellIndex c) {
@@ -146,7 +156,8 @@ RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const Front
     for (const slam::CellIndex n : neighbours(c)) push(n);
   }
   const double cell = map.resolution() * map.resolution();
-  return {static_cast<double>(predicted) * cell, static_cast<double>(unpredicted) * cell, closed_by_prediction};
+  return {static_cast<double>(predicted) * cell, static_cast<double>(unpredicted) * cell, closed_by_prediction,
+          closed_by_gap};
 }
 
 double PredictedMap::confidence(slam::CellIndex c) const {

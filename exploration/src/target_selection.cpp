@@ -122,7 +122,7 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
       if (in.skip.region_radius > 0) {
         // One flood fill of the frontier's region for every verdict of the region rule.
         const RegionArea a = pm.region_area(*in.map, f, in.skip);
-        c.predicted_share = a.covered(in.skip.region_tolerance) ? 1.0 : 0.0;
+        c.predicted_share = left_out(a, in.skip) ? 1.0 : 0.0;
         c.borders_prediction = in.skip.neighbours_last && a.partly_predicted(in.skip.region_tolerance);
       } else {
         c.predicted_share = pm.covered_share(*in.map, f, in.skip);

@@ -97,7 +97,7 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   }
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
-  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt};  // region: 0.5 m round the goal
+  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};  // region: 0.5 m round the goal
   PredictedMap none;
   EXPECT_NEAR(none.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.39, 0.03);  // the half disc
   EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
@@ -108,7 +108,7 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   PredictedMap free_region;
   free_region.add(hypothesis(0.05, 1.0, 0.7, -1000));
   EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, rule), 1.0);
-  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, {0.8, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt}), 0.0);  // Psi too low
+  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, {0.8, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35}), 0.0);  // Psi too low
   PredictedMap wall;
   wall.add(hypothesis(0.05, 0.1, 0.7, 2000));  // a wall right beyond the frontier closes it
   EXPECT_LT(wall.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.01);
@@ -118,7 +118,7 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   EXPECT_FALSE(none.borders_prediction(map, cluster, rule));
   EXPECT_TRUE(part.borders_prediction(map, cluster, rule));
   EXPECT_FALSE(free_region.borders_prediction(map, cluster, rule));
-  EXPECT_FALSE(part.borders_prediction(map, cluster, {0.6, false, 0.0, 0.1, 0.65, false, 0.0, std::nullopt}));
+  EXPECT_FALSE(part.borders_prediction(map, cluster, {0.6, false, 0.0, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35}));
   const RegionArea a = part.region_area(map, cluster, rule);
   EXPECT_NEAR(a.predicted + a.unpredicted, 0.39, 0.03);  // the half disc, split
   EXPECT_GT(a.predicted, 0.05);
@@ -136,7 +136,7 @@ TEST(PredictedMap, AnEmptyRegionIsNotCoveredByPrediction) {
   for (int y = 0; y < 20; ++y) cluster.cells.push_back({0, y});  // a stale frontier
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
-  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt};
+  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};
   PredictedMap none;
   const RegionArea a = none.region_area(map, cluster, rule);
   EXPECT_DOUBLE_EQ(a.predicted + a.unpredicted, 0.0);
@@ -162,7 +162,7 @@ TEST(PredictedMap, AGapInAWallClosesTheRegionWithWallGap) {
   for (int y = -30; y <= 50; ++y)
     if (y < 9 || y > 11) map.add_log_odds({5, y}, 2000);
   const PredictedMap none;
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt};
+  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};
   EXPECT_GT(none.region_area(map, cluster, rule).unpredicted, 1.0);  // the far side of the wall too
   rule.wall_gap = 0.3;
   EXPECT_LT(none.region_area(map, cluster, rule).unpredicted, 0.5);  // only the strip before it
@@ -183,7 +183,7 @@ TEST(PredictedMap, AKnownBoundaryEndsTheRegion) {
   cluster.goal_y = 0.5;
   PredictedMap pm;
   pm.add(hypothesis(0.05, 0.5, 0.7, -1000));  // the building's inside, up to x = 0.5, predicted
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt};
+  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};
   const RegionArea open = pm.region_area(map, cluster, rule);
   EXPECT_GT(open.unpredicted, 0.5);  // beyond x = 0.5: never predictable
   EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, rule), 0.0);
@@ -194,6 +194,76 @@ TEST(PredictedMap, AKnownBoundaryEndsTheRegion) {
   EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, rule), 1.0);
   const PredictedMap none;  // a boundary alone predicts nothing: the region is not left out
   EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
+}
+
+// A wall seen at a grazing angle: the frontier is the free strip's edge, a wall one cell
+// beyond it has unknown cells between its beam end points. Its far side is unknown only in
+// those gaps: with skip_wall_slivers it is left out as the wall running through them; a
+// stale frontier (nothing unexplored beyond it) is not, nor a frontier open beyond the gap.
+TEST(PredictedMap, AWallSliverIsLeftOutOnlyWhenAsked) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  for (int y = -30; y <= 50; ++y) {
+    map.add_log_odds({0, y}, -1000);
+    map.add_log_odds({-1, y}, -1000);
+    if (y >= 0 && y < 20) cluster.cells.push_back({0, y});
+    if (y % 3 != 0) map.add_log_odds({2, y}, 2000);  // the wall 0.1 m on, every third cell unseen
+  }
+  cluster.has_goal = true;
+  cluster.goal_y = 0.5;
+  const PredictedMap none;
+  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.3, std::nullopt, false, 0.35};
+  RegionArea a = none.region_area(map, cluster, rule);
+  EXPECT_TRUE(a.wall_sliver(rule.region_tolerance));
+  EXPECT_FALSE(left_out(a, rule));  // not without the option
+  rule.skip_wall_slivers = true;
+  EXPECT_TRUE(left_out(none.region_area(map, cluster, rule), rule));
+  EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 1.0);
+  rule.wall_gap = 0.0;  // gaps open: the region leaks beyond the wall, not a sliver
+  a = none.region_area(map, cluster, rule);
+  EXPECT_GT(a.unpredicted, 0.5);
+  EXPECT_FALSE(a.wall_sliver(rule.region_tolerance));
+  EXPECT_FALSE(left_out(a, rule));
+  EXPECT_FALSE((RegionArea{0.0, 0.0, false, false}).wall_sliver(0.1));   // stale: nothing unexplored
+  EXPECT_FALSE((RegionArea{0.0, 0.5, false, true}).wall_sliver(0.1));    // more than a pocket
+  EXPECT_TRUE((RegionArea{0.0, 0.05, false, false}).wall_sliver(0.1));   // a pocket closed by walls
+  EXPECT_FALSE((RegionArea{0.05, 0.0, false, true}).wall_sliver(0.1));   // predicted: the covered rule's
+  EXPECT_FALSE((RegionArea{0.0, 0.0, true, true}).wall_sliver(0.1));     // closed by a predicted wall: likewise
+}
+
+// A frontier made only by a band of cells a grazing beam crossed (seen, neither free nor
+// occupied; the frontier detector counts them unexplored) before an unbroken wall: without
+// the sliver rule its region is empty and nothing leaves it out; with it, the band is the
+// region, a pocket of 0.1 m^2, and the frontier is left out; a band open to a room is not.
+TEST(PredictedMap, AnUndecidedBandBeforeAWallIsASliver) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  for (int y = -30; y <= 50; ++y) {
+    map.add_log_odds({0, y}, -1000);
+    map.add_log_odds({-1, y}, -1000);
+    map.add_log_odds({1, y}, 100);   // undecided: probability 0.52
+    map.add_log_odds({2, y}, 2000);  // the wall, unbroken
+    if (y >= 0 && y < 20) cluster.cells.push_back({0, y});
+  }
+  cluster.has_goal = true;
+  cluster.goal_y = 0.5;
+  const PredictedMap none;
+  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};
+  const RegionArea before = none.region_area(map, cluster, rule);
+  EXPECT_DOUBLE_EQ(before.unpredicted, 0.0);
+  EXPECT_FALSE(before.closed_by_gap);
+  rule.skip_wall_slivers = true;
+  const RegionArea band = none.region_area(map, cluster, rule);
+  EXPECT_NEAR(band.unpredicted, 0.1, 0.005);  // the band, one cell wide, within 1 m of the goal
+  EXPECT_TRUE(left_out(band, rule));
+  slam::OccupancyGrid open;  // the same band, the wall with a 2 m opening to unknown space
+  for (int y = -30; y <= 50; ++y) {
+    open.add_log_odds({0, y}, -1000);
+    open.add_log_odds({-1, y}, -1000);
+    open.add_log_odds({1, y}, 100);
+    if (y < 0 || y >= 20) open.add_log_odds({2, y}, 2000);
+  }
+  EXPECT_FALSE(left_out(none.region_area(open, cluster, rule), rule));
 }
 
 TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {

@@ -194,6 +194,10 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  neighbours_last: true\n").file(), "my.yaml");  // needs a region
   EXPECT_EQ(parse_error("lookahead:\n  known_boundary: yes please\n").field(), "lookahead.known_boundary");
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  known_boundary: true\n").file(), "my.yaml");  // needs a region
+  EXPECT_EQ(parse_error("lookahead:\n  skip_wall_slivers: maybe\n").value(), "maybe");
+  // Slivers are regions of the region rule: without a region there are none.
+  EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  skip_wall_slivers: true\n").file(), "my.yaml");
+  EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip_region_radius: 5\n  skip_wall_slivers: true\n", "x"));
   e = parse_error("slam:\n  prediction:\n    hit_ratio_threshold: high\n");
   EXPECT_EQ(e.line(), 3u);
   EXPECT_EQ(e.field(), "prediction.hit_ratio_threshold");

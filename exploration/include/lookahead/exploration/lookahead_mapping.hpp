@@ -52,10 +52,15 @@ struct LookaheadOptions {
   /// frontier by the outer wall does not leak beyond it, where nothing can be predicted.
   /// The mission takes the boundary from the world's extent.
   bool known_boundary = false;
+  /// With skip_region_radius: also skip wall slivers, frontiers whose unexplored region is a
+  /// closed pocket of at most min_predicted_area that no prediction touches
+  /// (SkipRule::skip_wall_slivers, RegionArea::wall_sliver).
+  bool skip_wall_slivers = false;
   /// The rule of the options above.
   [[nodiscard]] SkipRule skip_rule() const {
     return {skip_confidence, skip_predicted_targets, skip_region_radius, predictor.min_predicted_area,
-            predictor.features.occupied_threshold, neighbours_last, skip_region_wall_gap, std::nullopt};
+            predictor.features.occupied_threshold, neighbours_last, skip_region_wall_gap, std::nullopt,
+            skip_wall_slivers, SkipRule{}.free};  // Mission::skip_rule() sets the mission's free threshold
   }
   /// Frontiers predicted per target selection: the chosen target first, then the nearest
   /// other frontier goals (the paper's extension "predict several possible targets",

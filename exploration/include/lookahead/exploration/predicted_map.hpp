@@ -34,6 +34,14 @@ struct SkipRule {
     double min_x, min_y, max_x, max_y;
   };
   std::optional<Extent> boundary;
+  /// With region_radius: also leave out wall slivers, frontiers whose unexplored region is a
+  /// closed pocket (RegionArea::wall_sliver): a wall seen at a grazing angle, a corner seen
+  /// from afar, a gap into a pillar. Their region then also holds the cells seen but
+  /// undecided (probability in [free, occupied)), as the frontier detector counts them
+  /// unexplored: such a band alone made a frontier whose region was empty, and the robot
+  /// drove to it (README, P-SLAM 1).
+  bool skip_wall_slivers = false;
+  double free = 0.35;  ///< with skip_wall_slivers: a seen cell below this is explored
 };
 
 /// A frontier's unexplored region (PredictedMap::region_area) [m^2].
@@ -41,15 +49,29 @@ struct RegionArea {
   double predicted = 0.0;    ///< by a hypothesis with the minimum Psi
   double unpredicted = 0.0;  ///< what driving there would still reveal
   bool closed_by_prediction = false;  ///< a predicted wall bounds it
+  /// An unexplored cell within the radius was left out of it: in a wall gap or beyond the boundary.
+  bool closed_by_gap = false;
   /// Something of it is predicted: a predicted part or a predicted wall closing it. An
   /// empty region (the far side already seen) is not left out by any prediction.
   [[nodiscard]] bool touched_by_prediction() const { return predicted > 0 || closed_by_prediction; }
   /// Left out by look-ahead mapping: touched by a prediction, and at most `tolerance` of it
   /// is not predicted [m^2].
   [[nodiscard]] bool covered(double tolerance) const { return touched_by_prediction() && unpredicted <= tolerance; }
+  /// A wall sliver: a closed pocket no prediction touches, of at most `tolerance` [m^2],
+  /// with something unexplored in it or left out of it as a wall gap or beyond the boundary.
+  /// Not the empty region of a stale frontier, whose far side was seen since (nothing
+  /// unexplored at all).
+  [[nodiscard]] bool wall_sliver(double tolerance) const {
+    return !touched_by_prediction() && unpredicted <= tolerance && (unpredicted > 0 || closed_by_gap);
+  }
   /// Part of it is predicted, more than `tolerance` of it is not [m^2].
   [[nodiscard]] bool partly_predicted(double tolerance) const { return predicted > 0 && unpredicted > tolerance; }
 };
+
+/// Does the rule leave out the frontier whose region this is?
+[[nodiscard]] inline bool left_out(const RegionArea& region, const SkipRule& rule) {
+  return region.covered(rule.region_tolerance) || (rule.skip_wall_slivers && region.wall_sliver(rule.region_tolerance));
+}
 
 class PredictedMap {
  public:
@@ -78,7 +100,7 @@ class PredictedMap {
   /// `occupied`), counting those not predicted. What driving there would still reveal.
   [[nodiscard]] double unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                         double radius, double min_confidence, double occupied) const {
-    return region_area(map, cluster, {min_confidence, false, radius, 0.0, occupied, false, 0.0, std::nullopt}).unpredicted;
+    return region_area(map, cluster, {min_confidence, false, radius, 0.0, occupied, false, 0.0, std::nullopt, false, 0.35}).unpredicted;
   }
   /// The same region (within rule.region_radius, walls closing it with rule.wall_gap),
   /// split into its predicted and unpredicted parts.
