@@ -229,6 +229,35 @@ TEST(PredictedMap, AWallSliverIsLeftOutOnlyWhenAsked) {
   EXPECT_TRUE((RegionArea{0.0, 0.05, false, false}).wall_sliver(0.1));   // a pocket closed by walls
   EXPECT_FALSE((RegionArea{0.05, 0.0, false, true}).wall_sliver(0.1));   // predicted: the covered rule's
   EXPECT_FALSE((RegionArea{0.0, 0.0, true, true}).wall_sliver(0.1));     // closed by a predicted wall: likewise
+  EXPECT_FALSE((RegionArea{0.0, 0.0, false, true, true}).wall_sliver(0.1));  // in a predicted wall's gap
+}
+
+// The same frontier before a *predicted* wall 0.15 m on, unbroken: its unexplored neighbours
+// lie within the gap width of that wall only. The prediction closes the region, not the
+// robot's own map, so the sliver rule does not leave it out (a predicted wall across a
+// corridor's mouth would otherwise cut off what lies beyond).
+TEST(PredictedMap, APredictedWallMakesNoSliver) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  slam::HypothesisMap wall;
+  for (int y = -30; y <= 50; ++y) {
+    map.add_log_odds({0, y}, -1000);
+    map.add_log_odds({-1, y}, -1000);
+    if (y >= 0 && y < 20) cluster.cells.push_back({0, y});
+    wall.grid.add_log_odds({3, y}, 2000);
+  }
+  wall.similarity = 0.9;
+  cluster.has_goal = true;
+  cluster.goal_y = 0.5;
+  PredictedMap pm;
+  pm.add(wall);
+  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.3, std::nullopt, true, 0.35};
+  const RegionArea a = pm.region_area(map, cluster, rule);
+  EXPECT_DOUBLE_EQ(a.unpredicted, 0.0);
+  EXPECT_TRUE(a.gap_of_prediction);
+  EXPECT_FALSE(left_out(a, rule));
+  for (int y = -30; y <= 50; ++y) map.add_log_odds({3, y}, 2000);  // the robot sees that wall itself
+  EXPECT_TRUE(left_out(pm.region_area(map, cluster, rule), rule));
 }
 
 // A frontier made only by a band of cells a grazing beam crossed (seen, neither free nor

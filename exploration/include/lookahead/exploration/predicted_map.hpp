@@ -51,18 +51,21 @@ struct RegionArea {
   bool closed_by_prediction = false;  ///< a predicted wall bounds it
   /// An unexplored cell within the radius was left out of it: in a wall gap or beyond the boundary.
   bool closed_by_gap = false;
+  /// ... in a gap that only a predicted wall closes (counted with SkipRule::skip_wall_slivers).
+  bool gap_of_prediction = false;
   /// Something of it is predicted: a predicted part or a predicted wall closing it. An
   /// empty region (the far side already seen) is not left out by any prediction.
   [[nodiscard]] bool touched_by_prediction() const { return predicted > 0 || closed_by_prediction; }
   /// Left out by look-ahead mapping: touched by a prediction, and at most `tolerance` of it
   /// is not predicted [m^2].
   [[nodiscard]] bool covered(double tolerance) const { return touched_by_prediction() && unpredicted <= tolerance; }
-  /// A wall sliver: a closed pocket no prediction touches, of at most `tolerance` [m^2],
-  /// with something unexplored in it or left out of it as a wall gap or beyond the boundary.
+  /// A wall sliver: a closed pocket no prediction touches (nor closes by a gap), of at most
+  /// `tolerance` [m^2], with something unexplored in it or left out of it as a wall gap or
+  /// beyond the boundary.
   /// Not the empty region of a stale frontier, whose far side was seen since (nothing
   /// unexplored at all).
   [[nodiscard]] bool wall_sliver(double tolerance) const {
-    return !touched_by_prediction() && unpredicted <= tolerance && (unpredicted > 0 || closed_by_gap);
+    return !touched_by_prediction() && !gap_of_prediction && unpredicted <= tolerance && (unpredicted > 0 || closed_by_gap);
   }
   /// Part of it is predicted, more than `tolerance` of it is not [m^2].
   [[nodiscard]] bool partly_predicted(double tolerance) const { return predicted > 0 && unpredicted > tolerance; }
