@@ -76,7 +76,7 @@ std::vector<WindowMatch3> SegSlam3d::match_candidates(SegParticle3& p, const Swe
   bool wide_searched = false;
   for (const Candidate& c : candidates) {
     WindowMatch3 m;
-    if (!c.wide_only) m = cached_match(c.id, c.guess, w);
+    if (!c.wide_only) m = capped_match(c.id, c.guess, w);
     // The wide stage where the capped search found nothing and the candidate's uncertainty
     // reaches beyond it; for the nearest such candidate only (its cost: the stage ran for
     // every candidate at first, and 10 particles took 5-8 times main's time).
@@ -157,12 +157,26 @@ std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::
   return candidates;
 }
 
+WindowMatch3 SegSlam3d::capped_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w) {
+  // Screened on the segment's first copy (SegSlam3dExtras::share_by_segment): where that
+  // finds nothing, so do the others; a match found there is fitted again to this copy.
+  const std::size_t first = options_.extras.share_by_segment ? segment_representative(candidate) : candidate;
+  if (first != candidate) {
+    WindowMatch3 screen = cached_match(first, guess, w);
+    if (!screen.ok) return screen;
+  }
+  return cached_match(candidate, guess, w);
+}
+
 WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w,
                                      const MatchingOptions* wide) {
   // The wide search reaches metres: its guess is rounded more coarsely, so particles share it.
   const double step = wide ? options_.extras.wide.guess_step : 0.5;
   const double angle_step = wide ? options_.extras.wide.guess_angle_step : 0.1;
-  const auto key = std::make_tuple(candidate, std::lround(guess.x / step), std::lround(guess.y / step),
+  // A wide search runs on one copy of the candidate's segment for every particle
+  // (SegSlam3dExtras::share_by_segment); the pose it finds is in the same frame.
+  const std::size_t searched = wide && options_.extras.share_by_segment ? segment_representative(candidate) : candidate;
+  const auto key = std::make_tuple(searched, std::lround(guess.x / step), std::lround(guess.y / step),
                                    std::lround(guess.z / 0.5), std::lround(guess.yaw / angle_step));
   // A wide search is shared by every particle with its key, so it must depend on the key
   // only: its reach is rounded to 1 m and 0.05 rad too (else the particle that asked first
@@ -182,14 +196,14 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
       const auto it = match_cache_.find(key);
       if (it != match_cache_.end()) m = it->second, found = true;
     }
-    target = targets_[candidate];
+    target = targets_[searched];
   }
   if (!found) {
     const auto start = std::chrono::steady_clock::now();
     // Searched from the rounded guess: the result does not depend on which particle asked.
     const Pose4 rounded{std::get<1>(key) * step, std::get<2>(key) * step, std::get<3>(key) * 0.5,
                         normalize_angle(std::get<4>(key) * angle_step)};
-    if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
+    if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(searched).map, options_.segslam.matching));
     const SweepWindow& window = window_with_structure(w);
     MatchingOptions shared = wide ? *wide : MatchingOptions{};
     shared.search_radius = static_cast<double>(std::get<5>(wide_key));
@@ -197,7 +211,7 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
     m = wide ? match_window_unambiguous(*target, window, rounded, shared, options_.extras.structure, options_.extras.wide)
              : match_window(*target, window, rounded, candidate_options(candidate), options_.extras.structure);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
-    targets_[candidate] = target;
+    targets_[searched] = target;
     if (wide) {
       wide_cache_.emplace(wide_key, m);
     } else {
@@ -211,6 +225,24 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
   m.translation = (m.pose.position() - guess.position()).norm();
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;
   return m;
+}
+
+std::size_t SegSlam3d::segment_representative(std::size_t candidate) const {
+  // Copies of one segment with the same parent chain: the same frame (a fresh submap's starts
+  // at the robot at its first scan, a match child takes its parent's) and the same evidence up
+  // to the particles' noise (a match child's map holds its ancestors'). The lowest id, so that
+  // the search does not depend on which particle asks first (thread timing).
+  const auto lineage = [&](std::size_t id) {
+    std::vector<Interval> out;
+    for (; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) out.push_back(segmap_.at(id).interval);
+    return out;
+  };
+  const std::vector<Interval> own = lineage(candidate);
+  for (const std::size_t m : segmap_.segment_of(candidate)) {  // ascending ids
+    if (m >= candidate) break;
+    if (map_holder(m) == m && lineage(m) == own) return m;
+  }
+  return candidate;
 }
 
 MatchingOptions SegSlam3d::candidate_options(std::size_t candidate) const {
