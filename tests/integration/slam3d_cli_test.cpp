@@ -79,6 +79,16 @@ TEST_F(Slam3dCli, SegslamWritesMapPictureAndRunJson) {
   EXPECT_GE(j["segmentations"].get<int>(), 1);
   EXPECT_TRUE(j.contains("final_position_error_m"));
   EXPECT_EQ(j["sample_entropies"].size(), 2U);
+  EXPECT_TRUE(j["share_by_segment"].get<bool>());  // the default
+}
+
+TEST_F(Slam3dCli, SearchPerParticleTurnsSegmentSharingOff) {
+  const Result r = run("garage --method segslam --particles 2 --max-sweeps 4 --map-samples 1 --search-per-particle --out " +
+                           dir.string(),
+                       dir / "log.txt");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "run.json"));
+  EXPECT_FALSE(j["share_by_segment"].get<bool>());
 }
 
 // The `locking:` keys of --segslam-config reach the 3D filter, and run.json counts what

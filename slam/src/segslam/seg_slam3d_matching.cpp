@@ -160,7 +160,7 @@ std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::
 WindowMatch3 SegSlam3d::capped_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w) {
   // Screened on the segment's first copy (SegSlam3dExtras::share_by_segment): where that
   // finds nothing, so do the others; a match found there is fitted again to this copy.
-  const std::size_t first = options_.extras.share_by_segment ? segment_representative(candidate) : candidate;
+  const std::size_t first = options_.extras.share_by_segment ? segmap_.first_copy(candidate) : candidate;
   if (first != candidate) {
     WindowMatch3 screen = cached_match(first, guess, w);
     if (!screen.ok) return screen;
@@ -175,7 +175,7 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
   const double angle_step = wide ? options_.extras.wide.guess_angle_step : 0.1;
   // A wide search runs on one copy of the candidate's segment for every particle
   // (SegSlam3dExtras::share_by_segment); the pose it finds is in the same frame.
-  const std::size_t searched = wide && options_.extras.share_by_segment ? segment_representative(candidate) : candidate;
+  const std::size_t searched = wide && options_.extras.share_by_segment ? segmap_.first_copy(candidate) : candidate;
   const auto key = std::make_tuple(searched, std::lround(guess.x / step), std::lround(guess.y / step),
                                    std::lround(guess.z / 0.5), std::lround(guess.yaw / angle_step));
   // A wide search is shared by every particle with its key, so it must depend on the key
@@ -225,24 +225,6 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
   m.translation = (m.pose.position() - guess.position()).norm();
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;
   return m;
-}
-
-std::size_t SegSlam3d::segment_representative(std::size_t candidate) const {
-  // Copies of one segment with the same parent chain: the same frame (a fresh submap's starts
-  // at the robot at its first scan, a match child takes its parent's) and the same evidence up
-  // to the particles' noise (a match child's map holds its ancestors'). The lowest id, so that
-  // the search does not depend on which particle asks first (thread timing).
-  const auto lineage = [&](std::size_t id) {
-    std::vector<Interval> out;
-    for (; id != kNoSubmap && segmap_.contains(id); id = segmap_.at(id).parent) out.push_back(segmap_.at(id).interval);
-    return out;
-  };
-  const std::vector<Interval> own = lineage(candidate);
-  for (const std::size_t m : segmap_.segment_of(candidate)) {  // ascending ids
-    if (m >= candidate) break;
-    if (map_holder(m) == m && lineage(m) == own) return m;
-  }
-  return candidate;
 }
 
 MatchingOptions SegSlam3d::candidate_options(std::size_t candidate) const {

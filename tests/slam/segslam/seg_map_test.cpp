@@ -104,3 +104,38 @@ TEST(MapSampler, SkipsTemporallyIncompatibleSegments) {
 
 }  // namespace
 }  // namespace lookahead::slam::segslam
+
+namespace lookahead::slam::segslam {
+namespace {
+
+// Copies of one segment share a search (SegSlam3dExtras::share_by_segment) only when they are
+// the same stretch in the same frame: the same interval along the same parent chain.
+TEST(SegMapFirstCopy, SameIntervalAndParentChainOnly) {
+  M m;
+  const std::size_t a0 = m.add(submap(0, 10, {}, {1, 0, 0}));
+  const std::size_t a1 = m.add(submap(0, 10, {}, {1.1, 0, 0}));   // another particle's copy
+  const std::size_t b0 = m.add(submap(10, 20, {}, {1, 0, 0}, a0));  // fresh, after a0
+  const std::size_t b1 = m.add(submap(10, 20, {}, {1, 0, 0}, a1));  // fresh, after a1
+  const std::size_t c0 = m.add(submap(10, 20, {}, {1, 0, 0}, a0, a0));  // re-entered a0
+  const std::size_t c1 = m.add(submap(10, 20, {}, {1, 0, 0}, a1, a1));  // re-entered a0's copy
+  const std::size_t d = m.add(submap(10, 21, {}, {1, 0, 0}, a1));       // another interval
+  EXPECT_EQ(m.first_copy(a0), a0);
+  EXPECT_EQ(m.first_copy(a1), a0);
+  EXPECT_EQ(m.first_copy(b1), b0);  // predecessors may differ: the frame starts at the robot
+  EXPECT_EQ(m.first_copy(c0), c0);  // a match child is not a copy of a fresh submap
+  EXPECT_EQ(m.first_copy(c1), c0);  // parents a0 and a1 have one interval
+  EXPECT_EQ(m.first_copy(d), d);
+}
+
+TEST(SegMapFirstCopy, SkipsMergedCopies) {
+  M m;
+  const std::size_t r = m.add(submap(0, 10, {}, {1, 0, 0}));
+  const std::size_t x0 = m.add(submap(10, 20, {}, {1, 0, 0}, r, r));  // two re-entries of r
+  const std::size_t x1 = m.add(submap(10, 20, {}, {1, 0, 0}, r, r));
+  EXPECT_EQ(m.first_copy(x1), x0);
+  ASSERT_TRUE(m.merge_into_parent(x0, [](NoMap&, const NoMap&) {}));  // x0's map went into r
+  EXPECT_EQ(m.first_copy(x1), x1);
+}
+
+}  // namespace
+}  // namespace lookahead::slam::segslam

@@ -83,6 +83,19 @@ class SegMap {
     }
     return out;
   }
+  /// The first (lowest-id) live copy of `id`'s segment that holds a map and has the same
+  /// parent chain (the intervals of its parent, its parent's parent, ...): the same frame (a
+  /// fresh submap's starts at the robot at its first scan, a match child takes its parent's)
+  /// and the same stretch of the world, up to the particles' noise (a match child's map holds
+  /// its ancestors'). `id` itself when no lower copy qualifies.
+  [[nodiscard]] std::size_t first_copy(std::size_t id) const {
+    const std::vector<Key> own = lineage(id);
+    for (const std::size_t m : segment_of(id)) {  // ascending ids
+      if (m >= id) break;
+      if (!at(m).merged && lineage(m) == own) return m;
+    }
+    return id;
+  }
   [[nodiscard]] std::vector<std::size_t> successors(std::size_t id) const { return live(successors_, id); }
   [[nodiscard]] std::vector<std::size_t> children(std::size_t id) const { return live(children_, id); }
 
@@ -116,6 +129,11 @@ class SegMap {
  private:
   using Key = std::pair<std::size_t, std::size_t>;
   static Key key(const Interval& i) { return {i.first_scan, i.last_scan}; }
+  std::vector<Key> lineage(std::size_t id) const {
+    std::vector<Key> out;
+    for (; id != kNoSubmap && contains(id); id = at(id).parent) out.push_back(key(at(id).interval));
+    return out;
+  }
   std::vector<std::size_t> live(const std::map<std::size_t, std::vector<std::size_t>>& links, std::size_t id) const {
     std::vector<std::size_t> out;
     const auto it = links.find(id);

@@ -194,8 +194,6 @@ class SegSlam3d {
   WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w,
                             const MatchingOptions* wide = nullptr);
   std::shared_ptr<const OctreeMatchTarget> target_of(std::size_t candidate);
-  /// The copy of `candidate`'s segment whose wide search it shares (share_by_segment).
-  [[nodiscard]] std::size_t segment_representative(std::size_t candidate) const;
   std::optional<WindowMatch3> confirm_pending(SegParticle3& p, const SweepWindow& w, std::vector<MatchAttempt3>& attempts);
   [[nodiscard]] double error_since(std::size_t candidate) const;
   [[nodiscard]] MatchingOptions candidate_options(std::size_t candidate) const;
