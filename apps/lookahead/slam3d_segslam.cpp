@@ -203,7 +203,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   if (run.max_search_radius >= 0) options.extras.max_search_radius = run.max_search_radius;
   if (run.wide_reentry_radius >= 0) options.extras.wide.max_radius = run.wide_reentry_radius;
   if (run.wide_retry_updates >= 0) options.extras.wide.retry_updates = run.wide_retry_updates;
-  if (run.search_per_particle) options.extras.share_by_segment = false;
+  if (run.search_per_particle) options.segslam.matching.share_by_segment = false;
   SegSlam3d filter(options);
   ProgressBar bar("segslam3d", log.sweeps.size());
   const auto start = std::chrono::steady_clock::now();
@@ -241,7 +241,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   j["offline_search_s"] = search_s;
   j["map_samples"] = samples;
   j["max_search_radius"] = options.extras.max_search_radius;
-  j["share_by_segment"] = options.extras.share_by_segment;
+  j["share_by_segment"] = options.segslam.matching.share_by_segment;
   const auto& wide = options.extras.wide;
   j["wide_reentry"] = {{"max_radius_m", wide.max_radius}, {"sigmas", wide.sigmas}, {"trigger_sigmas", wide.trigger_sigmas},
                        {"guess_step_m", wide.guess_step}, {"guess_angle_step_rad", wide.guess_angle_step},

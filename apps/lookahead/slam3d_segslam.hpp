@@ -25,7 +25,7 @@ struct SegSlam3dRun {
   double wide_reentry_radius = -1.0;
   /// Updates a candidate whose wide search found nothing waits before the next (wide_reentry.hpp); < 0: the default.
   int wide_retry_updates = -1;
-  /// Every particle searches its own copy of a segment (SegSlam3dExtras::share_by_segment off).
+  /// Every particle searches its own copy of a segment (MatchingOptions::share_by_segment off).
   bool search_per_particle = false;
 };
 

@@ -21,7 +21,8 @@
 #   env: RUNS (default 20), FIRST_SEED (default 1; seeds FIRST_SEED..RUNS, so a study can be
 #   continued in the same OUT), PARTICLES (default "1 5 10 20 40 100"), JOBS (default 2),
 #   METHODS (default "rbpf segslam"; "segslam-locking" is SegSLAM with
-#   config/segslam/locking.yaml: locking and merging on). The report covers every
+#   config/segslam/locking.yaml: locking and merging on; "segslam-per-particle" is SegSLAM
+#   with matching.share_by_segment off: every particle searches its own copy). The report covers every
 #   runs-*.txt in OUT.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -55,6 +56,7 @@ PY
 run() {  # run METHOD N SEED
   local dir=$OUT/runs/$1-$2-$3 method=(--method "$1")
   [[ $1 == segslam-locking ]] && method=(--method segslam --segslam-config config/segslam/locking.yaml)
+  [[ $1 == segslam-per-particle ]] && method=(--method segslam --segslam-config "$OUT/per_particle.yaml")
   "$BUILD/lookahead" slam "$OUT/intel-loop.log" "${method[@]}" --particles "$2" --seed "$3" --threads 1 \
     --config config/segslam/intel_loop_rbpf.yaml --map-samples 1 --out "$dir" > "$dir.log" 2>&1
   local err time
@@ -65,6 +67,8 @@ run() {  # run METHOD N SEED
 export -f run
 export OUT BUILD
 mkdir -p "$OUT/runs"
+# segslam-per-particle: every particle searches its own copy of a segment (no screening).
+printf 'matching:\n  share_by_segment: false\n' > "$OUT/per_particle.yaml"
 for n in $PARTICLES; do for s in $(seq "$FIRST_SEED" "$RUNS"); do for m in $METHODS; do echo "$m $n $s"; done; done; done |
   xargs -P "$JOBS" -L 1 bash -c 'run "$@"' _ | tee "$OUT/runs-$FIRST_SEED.txt"
 
@@ -80,7 +84,7 @@ commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'], capture_output=
 cpu = [l.split(':')[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')][0]
 print(f"commit {commit}, {cpu}; loaded machine (other builds running): times are indicative")
 print()
-methods = [m for m in ('rbpf', 'segslam', 'segslam-locking') if any(k[0] == m for k in by)]
+methods = [m for m in ('rbpf', 'segslam', 'segslam-per-particle', 'segslam-locking') if any(k[0] == m for k in by)]
 others = [m for m in methods if m != 'rbpf'] if 'rbpf' in methods else []
 print("| particles | runs | " + " | ".join(f"{m} error m (mean / std)" for m in methods) + " | "
       + " | ".join(f"{m} time s (median)" for m in methods) + " | "

@@ -42,6 +42,7 @@ void visit_sections(SegSlamOptions& o, V&& v) {
   v("min_inlier_ratio", m.min_inlier_ratio, "matches with fewer inliers are discarded");
   v("use_localization_filter", m.use_localization_filter, "match by a localisation filter (eq. 19), not ICP (eq. 18)");
   v("localization_particles", m.localization_particles, "particles of the localisation filter");
+  v("share_by_segment", m.share_by_segment, "copies of one segment share the searches that find nothing");
   auto& l = o.locking;
   v.section("locking");
   v("lock", l.lock, "lock well-registered re-entered submaps (localise, no writes)");

@@ -155,7 +155,7 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
   if (candidates.size() > static_cast<std::size_t>(o.max_candidates)) candidates.resize(static_cast<std::size_t>(o.max_candidates));
   std::vector<WindowMatch> out;
   for (const Candidate& c : candidates) {
-    WindowMatch m = cached_match(c.id, c.guess, w);
+    WindowMatch m = screened_match(c.id, c.guess, w);
     spdlog::debug("scan {} candidate {} [{}-{}] guess ({:.2f} {:.2f} {:.2f}) -> ({:.2f} {:.2f} {:.2f}) err {:.3f} tau {:.2f} ok {} w {:.3f}",
                   last_update_, c.id, segmap_.at(c.id).interval.first_scan, segmap_.at(c.id).interval.last_scan,
                   c.guess.x, c.guess.y, c.guess.theta, m.pose.x, m.pose.y, m.pose.theta, m.icp_error, m.translation,
@@ -172,6 +172,17 @@ std::uint64_t SegSlam::localization_seed(const std::tuple<std::size_t, long, lon
   const auto [candidate, x, y, theta] = key;
   const std::uint64_t a = mix_seed(rbpf_.seed, stats_.updates, candidate);
   return mix_seed(a, static_cast<std::uint64_t>(x) * 0x1000003ull + static_cast<std::uint64_t>(y), static_cast<std::uint64_t>(theta));
+}
+
+WindowMatch SegSlam::screened_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w) {
+  // Screened on the segment's first copy (MatchingOptions::share_by_segment): where that
+  // finds nothing, so do the other copies; a match found there is fitted to this copy.
+  const std::size_t first = options_.matching.share_by_segment ? segmap_.first_copy(candidate) : candidate;
+  if (first != candidate) {
+    WindowMatch screen = cached_match(first, guess, w);
+    if (!screen.ok) return screen;
+  }
+  return cached_match(candidate, guess, w);
 }
 
 WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w) {

@@ -158,9 +158,9 @@ std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::
 }
 
 WindowMatch3 SegSlam3d::capped_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w) {
-  // Screened on the segment's first copy (SegSlam3dExtras::share_by_segment): where that
+  // Screened on the segment's first copy (MatchingOptions::share_by_segment): where that
   // finds nothing, so do the others; a match found there is fitted again to this copy.
-  const std::size_t first = options_.extras.share_by_segment ? segmap_.first_copy(candidate) : candidate;
+  const std::size_t first = options_.segslam.matching.share_by_segment ? segmap_.first_copy(candidate) : candidate;
   if (first != candidate) {
     WindowMatch3 screen = cached_match(first, guess, w);
     if (!screen.ok) return screen;
@@ -174,8 +174,8 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
   const double step = wide ? options_.extras.wide.guess_step : 0.5;
   const double angle_step = wide ? options_.extras.wide.guess_angle_step : 0.1;
   // A wide search runs on one copy of the candidate's segment for every particle
-  // (SegSlam3dExtras::share_by_segment); the pose it finds is in the same frame.
-  const std::size_t searched = wide && options_.extras.share_by_segment ? segmap_.first_copy(candidate) : candidate;
+  // (MatchingOptions::share_by_segment); the pose it finds is in the same frame.
+  const std::size_t searched = wide && options_.segslam.matching.share_by_segment ? segmap_.first_copy(candidate) : candidate;
   const auto key = std::make_tuple(searched, std::lround(guess.x / step), std::lround(guess.y / step),
                                    std::lround(guess.z / 0.5), std::lround(guess.yaw / angle_step));
   // A wide search is shared by every particle with its key, so it must depend on the key

@@ -103,7 +103,7 @@ class PredictedMap {
   /// `occupied`), counting those not predicted. What driving there would still reveal.
   [[nodiscard]] double unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                         double radius, double min_confidence, double occupied) const {
-    return region_area(map, cluster, {min_confidence, false, radius, 0.0, occupied, false, 0.0, std::nullopt, false, 0.35}).unpredicted;
+    return region_area(map, cluster, {min_confidence, false, radius, 0.0, occupied, false, 0.0, std::nullopt, false, SkipRule{}.free}).unpredicted;
   }
   /// The same region (within rule.region_radius, walls closing it with rule.wall_gap),
   /// split into its predicted and unpredicted parts.

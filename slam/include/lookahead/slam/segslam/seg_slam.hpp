@@ -105,6 +105,8 @@ class SegSlam {
   void store_closed(SegParticle& p, Transition& t);
   void resample_if_needed();
 
+  /// cached_match, screened on the first copy of the candidate's segment (share_by_segment).
+  WindowMatch screened_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w);
   /// Matches of this update by (candidate, guess rounded to 1 m / 0.1 rad): resampled
   /// particles share their history and ask for the same match.
   WindowMatch cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w);

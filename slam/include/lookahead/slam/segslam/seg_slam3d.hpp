@@ -66,18 +66,6 @@ struct SegSlam3dExtras {
   double max_search_radius = 6.0;
   /// The wide, unambiguous re-entry search beyond that cap (wide_reentry.hpp).
   WideReentryOptions wide;
-  /// Searches shared by the copies of a segment: particles whose candidates are copies of one
-  /// segment (the same interval along the same parent chain: the same frame and the same
-  /// stretch of the world) search the copy with the lowest id. A wide search's re-entry is
-  /// confirmed on each particle's own copy at its next attempt; a capped search that finds
-  /// nothing on that copy is not repeated on the others, one that finds a match is, so every
-  /// match offered is fitted to the particle's own copy. false: every particle searches its own.
-  /// Deviation (speed; the paper matches each particle's candidate): on the garage loop all 20
-  /// particles searched their copies of one segment at the same update (seed 1: 260 wide
-  /// searches of 210 copies at 32 segment-updates, 311 of 319 finding nothing); the copies
-  /// differ only by the particles' noise inside one segment, and eq. 12 treats them as
-  /// interchangeable too.
-  bool share_by_segment = true;
   /// Keep every candidate considered, with its outcome, in the statistics (debug log).
   bool record_attempts = false;
 };
