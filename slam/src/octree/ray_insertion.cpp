@@ -2,9 +2,11 @@
 #include "lookahead/slam/octree/ray_insertion.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "lookahead/slam/octree/voxel_walk.hpp"
 
@@ -30,8 +32,27 @@ OctreeKey unpack(std::uint64_t p) {
           static_cast<std::uint16_t>(brick(6) | ((v >> 4) & 3))};
 }
 
+// Sorts and removes duplicates: the same result as std::sort + std::unique, by a least
+// significant digit radix sort (11-bit digits over the 48 bits a packed key uses), which took
+// about a quarter of a 3D filter's time as std::sort (perf, 20 particles). A digit that all keys
+// share (most high ones: a sweep spans few bricks) is skipped.
 void sort_unique(std::vector<std::uint64_t>& v) {
-  std::sort(v.begin(), v.end());
+  constexpr int kDigitBits = 11;
+  constexpr int kPasses = 5;  // 55 >= 48 bits
+  constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
+  if (v.size() < 2) return;
+  thread_local std::vector<std::uint64_t> scratch;
+  scratch.resize(v.size());
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const int shift = pass * kDigitBits;
+    std::array<std::size_t, kBuckets> start{};
+    for (const std::uint64_t x : v) ++start[(x >> shift) & (kBuckets - 1)];
+    if (start[(v.front() >> shift) & (kBuckets - 1)] == v.size()) continue;
+    std::size_t sum = 0;
+    for (std::size_t& c : start) sum += std::exchange(c, sum);
+    for (const std::uint64_t x : v) scratch[start[(x >> shift) & (kBuckets - 1)]++] = x;
+    v.swap(scratch);
+  }
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 

@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 #include <octomap/OcTree.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <set>
+#include <tuple>
 #include <random>
 
 namespace lookahead::slam {
@@ -99,6 +102,45 @@ TEST(RayInsertion, OccupiedWinsOverFreeInOneBatch) {
   EXPECT_FLOAT_EQ(*l, static_cast<float>(map.options().log_odds_hit));
   EXPECT_FLOAT_EQ(*map.log_odds(*map.grid().key_of({1.0, 0.1, 0.1})),
                   static_cast<float>(map.options().log_odds_miss));
+}
+
+// Phase one against a plain reference (std::set of the traced and end voxels): each voxel
+// once, occupied and free disjoint, and in brick order (the radix sort's result is std::sort's).
+TEST(RayInsertion, CollectedVoxelsAreUniqueInBrickOrderAndComplete) {
+  const auto tuple = [](const OctreeKey& k) { return std::make_tuple(k.x, k.y, k.z); };
+  const auto brick = [](const OctreeKey& k) {
+    return std::make_tuple(k.x >> octree_detail::kBrickBits, k.y >> octree_detail::kBrickBits,
+                           k.z >> octree_detail::kBrickBits);
+  };
+  for (unsigned seed : {1U, 2U}) {
+    EvidenceOctree map;
+    const RayInsertOptions options{6.0};
+    std::vector<Ray3> rays;
+    for (const auto& scan : random_scans(seed)) rays.insert(rays.end(), scan.begin(), scan.end());
+    const RayVoxels v = collect_ray_voxels(map.grid(), rays, options);
+    std::set<std::tuple<int, int, int>> occupied, free;
+    for (const Ray3& r : rays) {
+      const Eigen::Vector3d d = r.end - r.origin;
+      const double length = d.norm();
+      if (r.hit && length <= options.max_range) occupied.insert(tuple(*map.grid().key_of(r.end)));
+      std::vector<OctreeKey> trace;
+      trace_voxels(map.grid(), r.origin, r.origin + d * (std::min(length, options.max_range) / length), trace);
+      for (const OctreeKey& k : trace) free.insert(tuple(k));
+    }
+    for (const auto& k : occupied) free.erase(k);
+    for (const std::vector<OctreeKey>* keys : {&v.occupied, &v.free}) {
+      for (std::size_t i = 1; i < keys->size(); ++i) {
+        ASSERT_LE(brick((*keys)[i - 1]), brick((*keys)[i])) << i;
+        ASSERT_NE(tuple((*keys)[i - 1]), tuple((*keys)[i])) << i;
+      }
+    }
+    std::set<std::tuple<int, int, int>> got_occupied, got_free;
+    for (const OctreeKey& k : v.occupied) got_occupied.insert(tuple(k));
+    for (const OctreeKey& k : v.free) got_free.insert(tuple(k));
+    EXPECT_EQ(got_occupied.size(), v.occupied.size());
+    EXPECT_EQ(got_occupied, occupied);
+    EXPECT_EQ(got_free, free);
+  }
 }
 
 }  // namespace
