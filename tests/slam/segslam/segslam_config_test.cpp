@@ -27,6 +27,20 @@ TEST(SegSlamConfig, DumpReadsBack) {
   EXPECT_EQ(dump_segslam_options(back), dump_segslam_options(o));
 }
 
+// The shared-search switch reads back, and a value that is not a boolean is named with its line.
+TEST(SegSlamConfig, ShareBySegmentReadsAndRejectsNonBooleans) {
+  EXPECT_FALSE(parse_segslam_options("matching:\n  share_by_segment: false\n", "s.yaml").matching.share_by_segment);
+  try {
+    parse_segslam_options("matching:\n  icp_sigma: 0.1\n  share_by_segment: maybe\n", "s.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "s.yaml");
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "matching.share_by_segment");
+    EXPECT_NE(std::string(e.what()).find("maybe"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SegSlamConfig, ErrorsNameFileLineKeyAndValue) {
   try {
     parse_segslam_options("matching:\n  icp_sigma: 0.1\n  icp_sigm: 1\n", "s.yaml");
