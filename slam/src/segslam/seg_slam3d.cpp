@@ -49,6 +49,7 @@ struct SegSlam3d::Transition {
   std::size_t candidate = kNoSubmap;
   std::vector<MatchEvent3> offers;  ///< the matches offered; the one taken is `chosen`
   std::vector<MatchAttempt3> attempts;  ///< the candidates considered (record_attempts only)
+  std::optional<WideRequest> wide;      ///< the wide search asked for, run after the predictions
 };
 
 /// Dead reckoning from the last update's sweep to this one, and this sweep's beams.
@@ -154,7 +155,7 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
   std::vector<WindowMatch3> matches;
   const bool periodic = p.updates_since_match >= mo.period_updates && p.submap_updates >= mo.period_updates;
   if (segment || periodic) {
-    matches = match_candidates(p, w, ids, guesses, t.attempts, rng);
+    matches = match_candidates(p, w, ids, guesses, t.attempts, t.wide, rng);
     p.updates_since_match = 0;
   }
   std::vector<double> weights;
@@ -168,6 +169,8 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
   // A pending wide re-entry (wide_reentry.hpp) follows the particle into a fresh frame, which
   // starts at its pose; a match moves it into another candidate's frame, and it is dropped.
   if (p.pending) p.pending = draw.choice == SubmapChoice::kNew ? std::optional(carried_into(*p.pending, p.pose)) : std::nullopt;
+  if (t.wide && draw.choice == SubmapChoice::kNew) t.wide->carried = p.pose;
+  if (t.wide && draw.choice == SubmapChoice::kMatch) t.wide->dropped = true;
   const RangeSweep& at = sweeps_[last_update_];
   OctreeSubmap next;
   next.interval = {last_update_, last_update_, at.time, at.time};
@@ -237,22 +240,50 @@ void SegSlam3d::update(std::size_t k) {
   motion_error_sum_[k] = motion_error_sum_[last_update_] + s.motion_error;
   const SweepWindow w = window_after(last_update_);
   match_cache_.clear();
-  wide_cache_.clear();
   matched_window_.reset();
   const int n = static_cast<int>(particles_.size());
   std::vector<Transition> transitions(particles_.size());
   std::vector<double> gain(particles_.size(), 0.0);
   std::vector<char> warm(particles_.size(), 0);
+  std::vector<std::mt19937_64> rngs(particles_.size());
+  const auto step_particle = [&](std::size_t u) {
+    const double before = particles_[u].log_weight;
+    advance(particles_[u], s, rngs[u]);
+    gain[u] = particles_[u].log_weight - before;
+  };
 #pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
   for (int i = 0; i < n; ++i) {
     const auto u = static_cast<std::size_t>(i);
     SegParticle3& p = particles_[u];
-    std::mt19937_64 rng(mix_seed(options_.filter.seed, stats_.updates, static_cast<std::uint64_t>(i)));
-    transitions[u] = predict_submap(p, w, rng);
+    rngs[u].seed(mix_seed(options_.filter.seed, stats_.updates, static_cast<std::uint64_t>(i)));
+    transitions[u] = predict_submap(p, w, rngs[u]);
     warm[u] = p.submap_updates >= options_.extras.warmup_updates || p.submap.parent != kNoSubmap;
-    const double before = p.log_weight;
-    advance(p, s, rng);
-    gain[u] = p.log_weight - before;
+    if (!transitions[u].wide) step_particle(u);
+  }
+  // The wide searches asked for, one per segment (seg_slam3d_wide.cpp), beside the steps of
+  // the particles that asked (a step does not need its particle's search: the re-entry it
+  // finds waits for the next attempt).
+  std::vector<const WideRequest*> requests(transitions.size(), nullptr);
+  std::vector<std::size_t> waiting;
+  for (std::size_t u = 0; u < transitions.size(); ++u) {
+    if (transitions[u].wide) requests[u] = &*transitions[u].wide, waiting.push_back(u);
+  }
+  std::vector<WideSearch> searches = wide_searches(requests);
+  const int jobs = static_cast<int>(searches.size() + waiting.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count()) if (jobs > 1)
+  for (int j = 0; j < jobs; ++j) {
+    const auto u = static_cast<std::size_t>(j);
+    if (u < searches.size()) {
+      run_wide_search(searches[u], w);
+    } else {
+      step_particle(waiting[u - searches.size()]);
+    }
+  }
+  for (WideSearch& search : searches) {
+    for (std::size_t m = 0; m < search.members.size(); ++m) {
+      Transition& t = transitions[search.members[m]];
+      apply_wide(particles_[search.members[m]], *t.wide, search.results[m], t.attempts);
+    }
   }
   // Deviation (as in 2D): a fresh submap has little to weigh its first sweeps against; it
   // gets the mean factor of the other particles, so starting a submap is neither rewarded

@@ -2,8 +2,9 @@
 // SegSLAM 3D's matching step (Fairfield et al. 2010, sec. 4.5): the candidates of a particle's
 // local map sample, winnowed (sec. 4.5.1), matched (sec. 4.5.2: the capped search of
 // candidate_reach.hpp, then the wide unambiguous search of wide_reentry.hpp) and weighted by
-// eq. 18; the searches are cached per update and shared by the particles. Split out of
-// seg_slam3d.cpp, whose filter loop calls it.
+// eq. 18; the capped searches are cached per update and shared by the particles, the wide
+// ones are asked for here and run after the predictions, one per segment
+// (seg_slam3d_wide.cpp). Split out of seg_slam3d.cpp, whose filter loop calls it.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -56,7 +57,8 @@ struct SegSlam3d::Candidate {
 
 std::vector<WindowMatch3> SegSlam3d::match_candidates(SegParticle3& p, const SweepWindow& w,
                                                       std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
-                                                      std::vector<MatchAttempt3>& attempts, std::mt19937_64& rng) {
+                                                      std::vector<MatchAttempt3>& attempts,
+                                                      std::optional<WideRequest>& wide_request, std::mt19937_64& rng) {
   const bool record = options_.extras.record_attempts;
   std::vector<WindowMatch3> out;
   // Last attempt's wide re-entry, offered if this window confirms it.
@@ -82,34 +84,47 @@ std::vector<WindowMatch3> SegSlam3d::match_candidates(SegParticle3& p, const Swe
     // every candidate at first, and 10 particles took 5-8 times main's time).
     // A candidate whose last wide search found nothing waits (WideReentryOptions::retry_updates).
     const bool backed_off = !m.ok && c.wide.has_value() && !p.wide_backoff.allows(c.id, last_update_);
-    const bool wide = !m.ok && !wide_searched && c.wide.has_value() && !backed_off;
-    if (wide) m = cached_match(c.id, c.guess, w, &*c.wide), wide_searched = true;
-    if (backed_off && c.wide_only) m.rejection = "backed off";
-    // A wide pose farther from this particle's guess than the reach (the search started from
-    // a rounded guess, and ICP moves) is outside the region its uncertainty allows. (10
-    // particles, seed 1, sweep 287: 12.2 m from guesses 0.2-0.7 m off the truth, reach 11.3 m,
-    // an alias one column spacing off, confirmed once and taken.)
-    if (wide && m.ok && m.translation > c.wide->search_radius) m.ok = false, m.weight = 0.0, m.rejection = "beyond reach";
-    if (wide && !m.ok) p.wide_backoff.failed(c.id, last_update_, options_.extras.wide.retry_updates);
-    if (record) {
-      MatchAttempt3& a = attempts[c.attempt];
-      a.outcome = !m.ok ? AttemptOutcome::kRejected : wide ? AttemptOutcome::kPending : AttemptOutcome::kOffered;
-      a.guess_score = m.guess_score, a.coarse_score = m.coarse_score, a.pose = m.pose, a.rejection = m.rejection;
-      a.match_path_distance = distance_to_path(segmap_.at(c.id), m.pose, options_.extras.proximity_height);
-      a.wide = wide, a.modes = m.modes;
-    }
-    if (!m.ok) continue;
-    if (wide) {
-      // Not offered yet: the next attempt checks it (wide_reentry.hpp); it replaces a
-      // confirmed one only if heavier by eq. 18.
-      if (!p.pending || m.weight > pending_weight) p.pending = pending_of(c.id, m.pose, c.guess, p.pose), pending_weight = m.weight;
+    if (!m.ok && !wide_searched && c.wide.has_value() && !backed_off) {
+      // Run after this update's predictions, with the other particles' of the segment
+      // (seg_slam3d_wide.cpp); its result is never offered at this attempt anyway.
+      wide_request = WideRequest{c.id, c.guess, *c.wide, c.attempt, pending_weight, p.pose, std::nullopt, false};
+      wide_searched = true;
       continue;
     }
+    if (backed_off && c.wide_only) m.rejection = "backed off";
+    if (record) this->record(attempts[c.attempt], c.id, m, false);
+    if (!m.ok) continue;
     ids.push_back(c.id);
     guesses.push_back(c.guess);
     out.push_back(m);
   }
   return out;
+}
+
+void SegSlam3d::record(MatchAttempt3& a, std::size_t candidate, const WindowMatch3& m, bool wide) const {
+  a.outcome = !m.ok ? AttemptOutcome::kRejected : wide ? AttemptOutcome::kPending : AttemptOutcome::kOffered;
+  a.guess_score = m.guess_score, a.coarse_score = m.coarse_score, a.pose = m.pose, a.rejection = m.rejection;
+  a.match_path_distance = distance_to_path(segmap_.at(candidate), m.pose, options_.extras.proximity_height);
+  a.wide = wide, a.modes = m.modes;
+}
+
+void SegSlam3d::apply_wide(SegParticle3& p, const WideRequest& r, WindowMatch3 m, std::vector<MatchAttempt3>& attempts) {
+  m.translation = (m.pose.position() - r.guess.position()).norm();
+  m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(r.candidate)) : 0.0;
+  // A wide pose farther from this particle's guess than the reach (the search started from
+  // a rounded guess, and ICP moves) is outside the region its uncertainty allows. (10
+  // particles, seed 1, sweep 287: 12.2 m from guesses 0.2-0.7 m off the truth, reach 11.3 m,
+  // an alias one column spacing off, confirmed once and taken.)
+  if (m.ok && m.translation > r.options.search_radius) m.ok = false, m.weight = 0.0, m.rejection = "beyond reach";
+  if (!m.ok) p.wide_backoff.failed(r.candidate, last_update_, options_.extras.wide.retry_updates);
+  if (options_.extras.record_attempts) record(attempts[r.attempt], r.candidate, m, true);
+  if (!m.ok || r.dropped) return;
+  // Not offered yet: the next attempt checks it (wide_reentry.hpp); it replaces a confirmed
+  // one only if heavier by eq. 18. Placed as at the request, then carried as the pending
+  // re-entry would have been.
+  PendingReentry found = pending_of(r.candidate, m.pose, r.guess, r.pose);
+  if (r.carried) found = carried_into(found, *r.carried);
+  if (!p.pending || m.weight > r.pending_weight) p.pending = found;
 }
 
 std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::size_t skip,
@@ -168,59 +183,32 @@ WindowMatch3 SegSlam3d::capped_match(std::size_t candidate, const Pose4& guess, 
   return cached_match(candidate, guess, w);
 }
 
-WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w,
-                                     const MatchingOptions* wide) {
-  // The wide search reaches metres: its guess is rounded more coarsely, so particles share it.
-  const double step = wide ? options_.extras.wide.guess_step : 0.5;
-  const double angle_step = wide ? options_.extras.wide.guess_angle_step : 0.1;
-  // A wide search runs on one copy of the candidate's segment for every particle
-  // (MatchingOptions::share_by_segment); the pose it finds is in the same frame.
-  const std::size_t searched = wide && options_.segslam.matching.share_by_segment ? segmap_.first_copy(candidate) : candidate;
-  const auto key = std::make_tuple(searched, std::lround(guess.x / step), std::lround(guess.y / step),
+WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w) {
+  constexpr double step = 0.5, angle_step = 0.1;
+  const auto key = std::make_tuple(candidate, std::lround(guess.x / step), std::lround(guess.y / step),
                                    std::lround(guess.z / 0.5), std::lround(guess.yaw / angle_step));
-  // A wide search is shared by every particle with its key, so it must depend on the key
-  // only: its reach is rounded to 1 m and 0.05 rad too (else the particle that asked first
-  // would set it, and runs would depend on thread timing).
-  const auto wide_key = std::tuple_cat(key, std::make_tuple(wide ? std::lround(wide->search_radius) : 0L,
-                                                            wide ? std::lround(wide->search_angle / 0.05) : 0L));
   WindowMatch3 m;
   bool found = false;
   std::shared_ptr<const OctreeMatchTarget> target;
   {
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     ++stats_.match_requests;
-    if (wide) {
-      const auto it = wide_cache_.find(wide_key);
-      if (it != wide_cache_.end()) m = it->second, found = true;
-    } else {
-      const auto it = match_cache_.find(key);
-      if (it != match_cache_.end()) m = it->second, found = true;
-    }
-    target = targets_[searched];
+    const auto it = match_cache_.find(key);
+    if (it != match_cache_.end()) m = it->second, found = true;
+    target = targets_[candidate];
   }
   if (!found) {
     const auto start = std::chrono::steady_clock::now();
     // Searched from the rounded guess: the result does not depend on which particle asked.
     const Pose4 rounded{std::get<1>(key) * step, std::get<2>(key) * step, std::get<3>(key) * 0.5,
                         normalize_angle(std::get<4>(key) * angle_step)};
-    if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(searched).map, options_.segslam.matching));
-    const SweepWindow& window = window_with_structure(w);
-    MatchingOptions shared = wide ? *wide : MatchingOptions{};
-    shared.search_radius = static_cast<double>(std::get<5>(wide_key));
-    shared.search_angle = static_cast<double>(std::get<6>(wide_key)) * 0.05;
-    m = wide ? match_window_unambiguous(*target, window, rounded, shared, options_.extras.structure, options_.extras.wide)
-             : match_window(*target, window, rounded, candidate_options(candidate), options_.extras.structure);
+    if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
+    m = match_window(*target, window_with_structure(w), rounded, candidate_options(candidate), options_.extras.structure);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
-    targets_[searched] = target;
-    if (wide) {
-      wide_cache_.emplace(wide_key, m);
-    } else {
-      match_cache_.emplace(key, m);
-    }
+    targets_[candidate] = target;
+    match_cache_.emplace(key, m);
     ++stats_.match_attempts;
-    const double seconds = seconds_since(start);
-    if (wide) ++stats_.wide_attempts, stats_.wide_matching_seconds += seconds;
-    stats_.matching_seconds += seconds;
+    stats_.matching_seconds += seconds_since(start);
   }
   m.translation = (m.pose.position() - guess.position()).norm();
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -75,19 +77,46 @@ std::optional<MatchingOptions> wide_reach(const MatchingOptions& base, double er
 WindowMatch3 match_window_unambiguous(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& guess,
                                       const MatchingOptions& o, const StructureTestOptions& so,
                                       const WideReentryOptions& wide) {
+  return match_regions_unambiguous(target, window, {{guess, o.search_radius, o.search_angle}}, o, so, wide).front();
+}
+
+WideRegion covering_region(const WideRegion& first, const std::vector<WideRegion>& regions) {
+  WideRegion out{first.centre, first.radius, first.angle};
+  for (const WideRegion& r : regions) {
+    const double offset = std::max(std::abs(r.centre.x - first.centre.x), std::abs(r.centre.y - first.centre.y));
+    out.radius = std::max(out.radius, offset + r.radius);
+    out.angle = std::max(out.angle, std::abs(normalize_angle(r.centre.yaw - first.centre.yaw)) + r.angle);
+  }
+  out.angle = std::min(out.angle, M_PI);
+  return out;
+}
+
+namespace {
+
+bool inside(const WideRegion& r, const Pose4& p) {
+  constexpr double kSlack = 1e-9;  // grid poses are centre + i step: rounding, not reach
+  return std::abs(p.x - r.centre.x) <= r.radius + kSlack && std::abs(p.y - r.centre.y) <= r.radius + kSlack &&
+         std::abs(normalize_angle(p.yaw - r.centre.yaw)) <= r.angle + kSlack;
+}
+
+// match_window_unambiguous's decision for one region among the refined peaks in it.
+WindowMatch3 unambiguous_in(const WideRegion& region, const std::vector<LevelCoarseResult>& peaks,
+                            const std::function<const WindowMatch3&(std::size_t)>& refined,
+                            const OctreeMatchTarget& target, const SweepWindow& window, const MatchingOptions& o,
+                            const WideReentryOptions& wide) {
   WindowMatch3 out;
-  out.rejection = "too few points";
-  if (target.icp.size() < 10 || window.cloud.size() < 10) return out;
-  const std::vector<LevelCoarseResult> peaks = level_search_peaks(target.field, window.scored, guess, coarse_grid(o),
-                                                                  wide.peaks, wide.separation, wide.angle_separation);
   out.rejection = "no peak";
-  const double guess_score = share_of(near_in_plane_count(target.field, guess, window.scored), window.scored);
+  const double guess_score = share_of(near_in_plane_count(target.field, region.centre, window.scored), window.scored);
   std::vector<WindowMatch3> passed;
+  bool first = true;
   for (std::size_t k = 0; k < peaks.size(); ++k) {
-    WindowMatch3 m = refine_match(target, window, peaks[k].pose, guess, o, so);
+    if (!inside(region, peaks[k].pose)) continue;
+    WindowMatch3 m = refined(k);
+    m.translation = (m.pose.position() - region.centre.position()).norm();
+    m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
     m.guess_score = guess_score;
     m.coarse_score = share_of(peaks[k].score, window.scored);
-    if (k == 0) out = m;  // what is reported when nothing passes
+    if (first) out = m, first = false;  // what is reported when nothing passes
     if (!m.ok) continue;
     // ICP from two peaks may converge to one pose: one mode, kept once (the better fit).
     const auto same = std::find_if(passed.begin(), passed.end(), [&](const WindowMatch3& p) { return same_mode(p.pose, m.pose, wide); });
@@ -112,6 +141,32 @@ WindowMatch3 match_window_unambiguous(const OctreeMatchTarget& target, const Swe
     best.rejection = "ambiguous";
   }
   return best;
+}
+
+}  // namespace
+
+std::vector<WindowMatch3> match_regions_unambiguous(const OctreeMatchTarget& target, const SweepWindow& window,
+                                                    const std::vector<WideRegion>& regions, const MatchingOptions& o,
+                                                    const StructureTestOptions& so, const WideReentryOptions& wide) {
+  WindowMatch3 few;
+  few.rejection = "too few points";
+  std::vector<WindowMatch3> out(regions.size(), few);
+  if (regions.empty() || target.icp.size() < 10 || window.cloud.size() < 10) return out;
+  const WideRegion all = covering_region(regions.front(), regions);
+  MatchingOptions grid = o;
+  grid.search_radius = all.radius;
+  grid.search_angle = all.angle;
+  const std::vector<LevelCoarseResult> peaks = level_search_peaks(target.field, window.scored, all.centre, coarse_grid(grid),
+                                                                  wide.peaks, wide.separation, wide.angle_separation);
+  // Refined once, from the first region's centre: only tau and the weight depend on it, and
+  // unambiguous_in takes them again per region.
+  std::vector<std::optional<WindowMatch3>> refined(peaks.size());
+  const auto refine = [&](std::size_t k) -> const WindowMatch3& {
+    if (!refined[k]) refined[k] = refine_match(target, window, peaks[k].pose, all.centre, o, so);
+    return *refined[k];
+  };
+  for (std::size_t r = 0; r < regions.size(); ++r) out[r] = unambiguous_in(regions[r], peaks, refine, target, window, o, wide);
+  return out;
 }
 
 }  // namespace lookahead::slam::segslam

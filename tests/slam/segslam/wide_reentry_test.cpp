@@ -154,6 +154,59 @@ TEST(WideReentry, AFarGuessIsMatchedWhenOnePoseFitsAndRejectedWhenTwoDo) {
   EXPECT_EQ(ambiguous.modes, 2U);
 }
 
+// The square that covers several particles' regions is centred on the first one's and
+// reaches as far as the farthest edge of any, in x or y and in yaw.
+TEST(WideReentry, CoveringRegionHoldsEveryRegion) {
+  const WideRegion first{{10.0, 5.0, 1.0, 0.2}, 12.0, 0.6};
+  const WideRegion east{{14.0, 6.0, 1.0, 0.4}, 10.0, 0.5};   // 4 m off in x: edge 14 m, yaw 0.7 rad
+  const WideRegion south{{9.0, -1.5, 1.0, 0.1}, 13.0, 0.8};  // 6.5 m off in y: edge 19.5 m, yaw 0.9 rad
+  const WideRegion one = covering_region(first, {first});
+  EXPECT_DOUBLE_EQ(one.radius, 12.0);
+  EXPECT_DOUBLE_EQ(one.angle, 0.6);
+  const WideRegion all = covering_region(first, {first, east, south});
+  EXPECT_DOUBLE_EQ(all.centre.x, 10.0);
+  EXPECT_DOUBLE_EQ(all.radius, 19.5);
+  EXPECT_NEAR(all.angle, 0.9, 1e-12);
+  // Across the +-pi seam the yaw offset is the short way round.
+  const WideRegion seam = covering_region({{0, 0, 0, 3.1}, 5.0, 0.3}, {{{0, 0, 0, -3.1}, 5.0, 0.3}});
+  EXPECT_NEAR(seam.angle, 0.3 + (2 * M_PI - 6.2), 1e-12);
+}
+
+// One search for several regions answers each from the peaks inside it: with the place twice
+// (40 m apart), a region around either copy finds that copy alone, one spanning both is
+// ambiguous, as three separate searches would decide.
+TEST(WideReentry, RegionsSearchedTogetherAreEachAnsweredFromTheirOwnPeaks) {
+  const RangeLog3& log = garage_log();
+  const MatchingOptions base = segslam3d_defaults().matching;
+  const SweepWindow w = window_of(log, 8, 11);
+  const Pose4 truth = Pose4::level_of(*log.sweeps[8].truth);
+  const Pose4 copy{truth.x + 40.0, truth.y, truth.z, truth.yaw};
+  const OctreeMatchTarget doubled = match_target_of(twice(map_of(log, 5, 12), 200), base);
+  WideReentryOptions wide;
+  MatchingOptions o = *wide_reach(base, 8.0, 6.0, wide);
+  o.search_angle = 0.1;  // the copies differ in x only; keeps the test quick
+  const std::vector<WideRegion> regions{{{truth.x + 3.0, truth.y - 2.0, truth.z, truth.yaw}, 6.0, 0.1},
+                                        {{copy.x - 3.0, copy.y + 2.0, copy.z, copy.yaw}, 6.0, 0.1},
+                                        {{truth.x + 20.0, truth.y, truth.z, truth.yaw}, 21.0, 0.1}};
+  const std::vector<WindowMatch3> found = match_regions_unambiguous(doubled, w, regions, o, {}, wide);
+  ASSERT_EQ(found.size(), 3U);
+  EXPECT_TRUE(found[0].ok && at(found[0], truth)) << found[0].rejection;
+  EXPECT_TRUE(found[1].ok && at(found[1], copy)) << found[1].rejection;
+  EXPECT_NEAR(found[1].translation, (copy.position() - regions[1].centre.position()).norm(), 0.2);  // tau from its own centre
+  EXPECT_FALSE(found[2].ok);
+  EXPECT_STREQ(found[2].rejection, "ambiguous");
+  // A single region is match_window_unambiguous.
+  const WindowMatch3 alone = match_window_unambiguous(doubled, w, regions[0].centre, [&] {
+    MatchingOptions r = o;
+    r.search_radius = regions[0].radius;
+    return r;
+  }(), {}, wide);
+  const WindowMatch3 one = match_regions_unambiguous(doubled, w, {regions[0]}, o, {}, wide).front();
+  EXPECT_EQ(alone.ok, one.ok);
+  EXPECT_EQ(alone.pose.x, one.pose.x);
+  EXPECT_EQ(alone.weight, one.weight);
+}
+
 // A candidate whose wide search found nothing waits retry_updates updates, the others do not;
 // with 0 (the old behaviour) nothing waits; a later failure restarts the wait.
 TEST(WideReentry, BackoffHoldsAFailedCandidateForRetryUpdatesOnly) {

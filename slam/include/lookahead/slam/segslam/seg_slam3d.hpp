@@ -162,6 +162,26 @@ class SegSlam3d {
  private:
   struct Transition;
   struct SweepModel;  // one update's motion and measurement, shared by the particles
+  /// A particle's wide search (wide_reentry.hpp), asked for during its prediction and run
+  /// after it, with the other particles' of the same segment (seg_slam3d_wide.cpp).
+  struct WideRequest {
+    std::size_t candidate = 0;
+    Pose4 guess;              ///< the map sample's
+    MatchingOptions options;  ///< its reach (wide_reach)
+    std::size_t attempt = 0;  ///< index into the transition's attempts (record_attempts)
+    double pending_weight = 0.0;  ///< eq. 18 weight of the pending re-entry confirmed this attempt
+    Pose4 pose;               ///< the particle's when it asked
+    std::optional<Pose4> carried;  ///< the origin of the fresh submap the particle started since
+    bool dropped = false;     ///< the particle took a match since: the re-entry goes nowhere
+  };
+  /// One wide search for the requests on copies of one segment (seg_slam3d_wide.cpp).
+  struct WideSearch {
+    std::size_t searched = 0;           ///< the submap searched (the segment's first copy)
+    MatchingOptions options;            ///< the first member's, its reach rounded
+    std::vector<std::size_t> members;   ///< the particles that asked, in order
+    std::vector<WideRegion> regions;    ///< theirs, rounded
+    std::vector<WindowMatch3> results;  ///< per member
+  };
   void initialize(const RangeSweep& first);
   void update(std::size_t k);
   void run_pending(double lookahead_s);
@@ -173,14 +193,19 @@ class SegSlam3d {
                                 std::mt19937_64& rng) const;
   std::vector<WindowMatch3> match_candidates(SegParticle3& p, const SweepWindow& w,
                                              std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
-                                             std::vector<MatchAttempt3>& attempts, std::mt19937_64& rng);
+                                             std::vector<MatchAttempt3>& attempts, std::optional<WideRequest>& wide,
+                                             std::mt19937_64& rng);
+  void record(MatchAttempt3& a, std::size_t candidate, const WindowMatch3& m, bool wide) const;
+  /// requests[i]: particle i's, or null.
+  [[nodiscard]] std::vector<WideSearch> wide_searches(const std::vector<const WideRequest*>& requests) const;
+  void run_wide_search(WideSearch& search, const SweepWindow& w);
+  void apply_wide(SegParticle3& p, const WideRequest& request, WindowMatch3 m, std::vector<MatchAttempt3>& attempts);
   [[nodiscard]] std::pair<std::size_t, Pose4> nearest_path_pose(std::size_t candidate, const Eigen::Vector3d& p) const;
   [[nodiscard]] MatchAttempt3 attempt_of(std::size_t candidate, const Pose4& guess, double path_distance,
                                          double chain_error, const std::optional<MatchingOptions>& wide) const;
   MatchEvent3 offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const;
   WindowMatch3 capped_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
-  WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w,
-                            const MatchingOptions* wide = nullptr);
+  WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
   std::shared_ptr<const OctreeMatchTarget> target_of(std::size_t candidate);
   std::optional<WindowMatch3> confirm_pending(SegParticle3& p, const SweepWindow& w, std::vector<MatchAttempt3>& attempts);
   [[nodiscard]] double error_since(std::size_t candidate) const;
@@ -210,7 +235,6 @@ class SegSlam3d {
   std::mutex cache_mutex_;
   std::map<std::size_t, std::shared_ptr<const OctreeMatchTarget>> targets_;
   std::map<std::tuple<std::size_t, long, long, long, long>, WindowMatch3> match_cache_;
-  std::map<std::tuple<std::size_t, long, long, long, long, long, long>, WindowMatch3> wide_cache_;  ///< + the reach
   std::mutex window_mutex_;
   std::optional<SweepWindow> matched_window_;  ///< this update's window with its structure
 };

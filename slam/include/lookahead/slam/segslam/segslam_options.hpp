@@ -70,9 +70,10 @@ struct MatchingOptions {
   /// frame and the same stretch of the world) screen on the first copy: where a search there
   /// finds nothing, the other copies are not searched; where it finds a match, each copy is
   /// searched itself, so every match offered is fitted to the particle's own copy. In 3D the
-  /// wide re-entry search (wide_reentry.hpp) runs on the first copy only, and each particle
-  /// confirms the re-entry on its own copy at its next attempt. false: every particle searches
-  /// its own copy. Deviation (speed; the paper matches each particle's candidate): on the garage
+  /// wide re-entry search (wide_reentry.hpp) runs on the first copy only, once per update for
+  /// all the particles that ask (over a square covering their regions, seg_slam3d_wide.cpp),
+  /// and each particle confirms the re-entry on its own copy at its next attempt. false: every
+  /// particle searches its own copy (the wide search once per copy). Deviation (speed; the paper matches each particle's candidate): on the garage
   /// loop all 20 particles searched their copies of one segment at the same update (seed 1: 260
   /// wide searches of 210 copies at 32 segment-updates, 311 of 319 finding nothing); the copies
   /// differ only by the particles' noise inside one segment, and eq. 12 treats them as
