@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/segslam/level_coarse_search.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -157,6 +158,43 @@ LevelCoarseResult level_search_branch_and_bound(const NearOccupiedField& field, 
 std::vector<LevelCoarseResult> level_search_peaks(const NearOccupiedField& field, const Points3& points,
                                                   const Pose4& guess, const LevelPoseGrid& grid, std::size_t count,
                                                   double separation, double angle_separation) {
+  return level_search_peaks_within(field, points, guess, grid, {{guess, grid.radius, grid.angle}}, count, separation,
+                                   angle_separation)
+      .front();
+}
+
+namespace {
+
+// The indices of a part of the grid (clipped to the grid).
+struct IndexBox {
+  int a0, a1, i0, i1, j0, j1;
+
+  // Does the block of 2^level translations from (i, j) at heading a meet the box?
+  [[nodiscard]] bool meets(std::size_t level, int a, int i, int j) const {
+    const int last = (1 << level) - 1;
+    return a >= a0 && a <= a1 && i <= i1 && i + last >= i0 && j <= j1 && j + last >= j0;
+  }
+};
+
+IndexBox index_box(const IndexGrid& g, const Pose4& guess, const LevelPoseGrid& grid, const LevelSubgrid& part) {
+  constexpr double kSlack = 1e-9;  // a pose on the part's edge belongs to it
+  const auto from = [](double v) { return static_cast<int>(std::ceil(v - kSlack)); };
+  const auto to = [](double v) { return static_cast<int>(std::floor(v + kSlack)); };
+  const double dx = part.centre.x - guess.x, dy = part.centre.y - guess.y;
+  const double dyaw = normalize_angle(part.centre.yaw - guess.yaw);
+  return {std::max(-g.na, from((dyaw - part.angle) / grid.angle_step)), std::min(g.na, to((dyaw + part.angle) / grid.angle_step)),
+          std::max(-g.n, from((dx - part.radius) / grid.step)), std::min(g.n, to((dx + part.radius) / grid.step)),
+          std::max(-g.n, from((dy - part.radius) / grid.step)), std::min(g.n, to((dy + part.radius) / grid.step))};
+}
+
+}  // namespace
+
+std::vector<std::vector<LevelCoarseResult>> level_search_peaks_within(const NearOccupiedField& field,
+                                                                      const Points3& points, const Pose4& guess,
+                                                                      const LevelPoseGrid& grid,
+                                                                      const std::vector<LevelSubgrid>& parts,
+                                                                      std::size_t count, double separation,
+                                                                      double angle_separation) {
   const std::vector<int> widths = level_bound_widths(grid.step, field.resolution());
   if (field.bound_widths() != widths) {
     throw std::invalid_argument("level_search_peaks: the field's bound levels do not fit a " +
@@ -164,28 +202,33 @@ std::vector<LevelCoarseResult> level_search_peaks(const NearOccupiedField& field
   }
   const Scorer score(field, points, guess, grid);
   BoundMemo memo(score.index, widths.size());
-  std::vector<detail::GridHit> found;
-  // A grid pose near an earlier peak scores 0 at level 0; a block's bound is left as it is
-  // (still never below the score of any pose in it).
-  const auto excluded = [&](int a, int i, int j) {
-    for (const detail::GridHit& h : found) {
-      const double dyaw = std::abs(a - h.a) * grid.angle_step;
-      if (std::hypot(i - h.i, j - h.j) * grid.step <= separation && dyaw <= angle_separation) return true;
+  std::vector<std::vector<LevelCoarseResult>> out;
+  for (const LevelSubgrid& part : parts) {
+    const IndexBox box = index_box(score.index, guess, grid, part);
+    std::vector<detail::GridHit> found;
+    // A grid pose near an earlier peak scores 0 at level 0; a block's bound is left as it is
+    // (still never below the score of any pose in it). Outside the part, everything is 0.
+    const auto excluded = [&](int a, int i, int j) {
+      for (const detail::GridHit& h : found) {
+        const double dyaw = std::abs(a - h.a) * grid.angle_step;
+        if (std::hypot(i - h.i, j - h.j) * grid.step <= separation && dyaw <= angle_separation) return true;
+      }
+      return false;
+    };
+    const auto bound = [&](std::size_t level, int a, int i, int j) {
+      if (!box.meets(level, a, i, j) || (level == 0 && excluded(a, i, j))) return 0;
+      int& v = memo.at(level, a, i, j);
+      if (v < 0) v = score(level, a, i, j);
+      return v;
+    };
+    std::vector<LevelCoarseResult> peaks;
+    while (peaks.size() < count) {
+      const std::optional<GridHit> hit = detail::branch_and_bound(score.index, widths.size(), bound, 0);
+      if (!hit) break;
+      found.push_back(*hit);
+      peaks.push_back(score.result(hit));
     }
-    return false;
-  };
-  const auto bound = [&](std::size_t level, int a, int i, int j) {
-    if (level == 0 && excluded(a, i, j)) return 0;
-    int& v = memo.at(level, a, i, j);
-    if (v < 0) v = score(level, a, i, j);
-    return v;
-  };
-  std::vector<LevelCoarseResult> out;
-  while (out.size() < count) {
-    const std::optional<GridHit> hit = detail::branch_and_bound(score.index, widths.size(), bound, 0);
-    if (!hit) break;
-    found.push_back(*hit);
-    out.push_back(score.result(hit));
+    out.push_back(std::move(peaks));
   }
   return out;
 }

@@ -83,6 +83,8 @@ void IcpTarget3::index_cells() {
   by_cell_.resize(points_.size());
   std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
   for (std::size_t i = 0; i < points_.size(); ++i) by_cell_[next[cell(points_[i])]++] = static_cast<std::uint32_t>(i);
+  by_cell_points_.resize(points_.size());
+  for (std::size_t k = 0; k < by_cell_.size(); ++k) by_cell_points_[k] = points_[by_cell_[k]];
 }
 
 template <class F>
@@ -125,14 +127,18 @@ long IcpTarget3::nearest(const Eigen::Vector3d& q) const {
     const auto c = static_cast<std::size_t>((z * ny_ + y) * nx_ + x);
     const long order = ((dx + 1) * 3 + (dy + 1)) * 3 + (dz + 1);
     for (std::uint32_t k = first_[c]; k < first_[c + 1]; ++k) {
-      const double d2 = (points_[by_cell_[k]] - q).squaredNorm();
+      const double d2 = (by_cell_points_[k] - q).squaredNorm();
       const long rank = order * static_cast<long>(points_.size()) + by_cell_[k];
       if (d2 < best_d2 || (d2 == best_d2 && rank > best_rank)) best_d2 = d2, best = by_cell_[k], best_rank = rank;
     }
   };
   scan(0, 0, 0);
+  // The same cells in the same order as testing all 26: a row or column whose nearer faces
+  // already lie beyond the best is left at once (the faces' sum only grows).
   for (int dx = -1; dx <= 1; ++dx) {
+    if (fx[dx + 1] > best_d2 + kMargin) continue;
     for (int dy = -1; dy <= 1; ++dy) {
+      if (fx[dx + 1] + fy[dy + 1] > best_d2 + kMargin) continue;
       for (int dz = -1; dz <= 1; ++dz) {
         if (dx != 0 || dy != 0 || dz != 0) scan(dx, dy, dz);
       }

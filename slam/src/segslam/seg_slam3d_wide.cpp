@@ -11,6 +11,7 @@
 // ground. The search does not depend on which particle asks or in which thread: the groups
 // are formed in particle order, their region is the first member's rounded one grown to
 // hold the others'.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -23,13 +24,21 @@ namespace lookahead::slam::segslam {
 namespace {
 
 // The region a request covers, rounded (guess to the wide stage's grid, reach to 1 m and
-// 0.05 rad) so that particles with nearby guesses ask for the same one.
+// 0.05 rad) so that particles with nearby guesses ask for the same one. The guess's grid is
+// a whole number of the coarse search's steps (2.4 m for 2.5 m and 0.3 m steps), so that the
+// coarse poses of particles searched together are those each would have searched alone: on
+// grids shifted by a fraction of a step, ICP from the other grid's peak ended at other
+// poses, and an alias one column spacing off passed the tests where it had failed them (20
+// particles, seed 5, sweep 283: taken at 287, the loop lost).
 WideRegion rounded_region(const Pose4& guess, const MatchingOptions& reach, const WideReentryOptions& w) {
-  const auto round_to = [](double v, double step) { return static_cast<double>(std::lround(v / step)) * step; };
-  return {{round_to(guess.x, w.guess_step), round_to(guess.y, w.guess_step), round_to(guess.z, 0.5),
-           normalize_angle(round_to(guess.yaw, w.guess_angle_step))},
+  const LevelPoseGrid coarse = coarse_grid(reach);
+  const auto lattice = [](double step, double unit) { return unit * std::max(1.0, std::round(step / unit)); };
+  const double step = lattice(w.guess_step, coarse.step), angle_step = lattice(w.guess_angle_step, coarse.angle_step);
+  const auto round_to = [](double v, double s) { return static_cast<double>(std::lround(v / s)) * s; };
+  return {{round_to(guess.x, step), round_to(guess.y, step), round_to(guess.z, 0.5),
+           normalize_angle(round_to(guess.yaw, angle_step))},
           static_cast<double>(std::lround(reach.search_radius)),
-          static_cast<double>(std::lround(reach.search_angle / 0.05)) * 0.05};
+          static_cast<double>(std::lround(reach.search_angle / coarse.angle_step)) * coarse.angle_step};
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <optional>
+#include <map>
+#include <tuple>
 #include <stdexcept>
 #include <vector>
 
@@ -93,30 +94,22 @@ WideRegion covering_region(const WideRegion& first, const std::vector<WideRegion
 
 namespace {
 
-bool inside(const WideRegion& r, const Pose4& p) {
-  constexpr double kSlack = 1e-9;  // grid poses are centre + i step: rounding, not reach
-  return std::abs(p.x - r.centre.x) <= r.radius + kSlack && std::abs(p.y - r.centre.y) <= r.radius + kSlack &&
-         std::abs(normalize_angle(p.yaw - r.centre.yaw)) <= r.angle + kSlack;
-}
-
-// match_window_unambiguous's decision for one region among the refined peaks in it.
+// match_window_unambiguous's decision for one region among its peaks, refined.
 WindowMatch3 unambiguous_in(const WideRegion& region, const std::vector<LevelCoarseResult>& peaks,
-                            const std::function<const WindowMatch3&(std::size_t)>& refined,
+                            const std::function<const WindowMatch3&(const Pose4&)>& refined,
                             const OctreeMatchTarget& target, const SweepWindow& window, const MatchingOptions& o,
                             const WideReentryOptions& wide) {
   WindowMatch3 out;
   out.rejection = "no peak";
   const double guess_score = share_of(near_in_plane_count(target.field, region.centre, window.scored), window.scored);
   std::vector<WindowMatch3> passed;
-  bool first = true;
   for (std::size_t k = 0; k < peaks.size(); ++k) {
-    if (!inside(region, peaks[k].pose)) continue;
-    WindowMatch3 m = refined(k);
+    WindowMatch3 m = refined(peaks[k].pose);
     m.translation = (m.pose.position() - region.centre.position()).norm();
     m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
     m.guess_score = guess_score;
     m.coarse_score = share_of(peaks[k].score, window.scored);
-    if (first) out = m, first = false;  // what is reported when nothing passes
+    if (k == 0) out = m;  // what is reported when nothing passes
     if (!m.ok) continue;
     // ICP from two peaks may converge to one pose: one mode, kept once (the better fit).
     const auto same = std::find_if(passed.begin(), passed.end(), [&](const WindowMatch3& p) { return same_mode(p.pose, m.pose, wide); });
@@ -156,16 +149,18 @@ std::vector<WindowMatch3> match_regions_unambiguous(const OctreeMatchTarget& tar
   MatchingOptions grid = o;
   grid.search_radius = all.radius;
   grid.search_angle = all.angle;
-  const std::vector<LevelCoarseResult> peaks = level_search_peaks(target.field, window.scored, all.centre, coarse_grid(grid),
-                                                                  wide.peaks, wide.separation, wide.angle_separation);
-  // Refined once, from the first region's centre: only tau and the weight depend on it, and
-  // unambiguous_in takes them again per region.
-  std::vector<std::optional<WindowMatch3>> refined(peaks.size());
-  const auto refine = [&](std::size_t k) -> const WindowMatch3& {
-    if (!refined[k]) refined[k] = refine_match(target, window, peaks[k].pose, all.centre, o, so);
-    return *refined[k];
+  const std::vector<std::vector<LevelCoarseResult>> peaks = level_search_peaks_within(
+      target.field, window.scored, all.centre, coarse_grid(grid), regions, wide.peaks, wide.separation, wide.angle_separation);
+  // A grid pose is refined once, from the covering square's centre: only tau and the weight
+  // depend on it, and unambiguous_in takes them again per region.
+  std::map<std::tuple<double, double, double>, WindowMatch3> refined;
+  const auto refine = [&](const Pose4& seed) -> const WindowMatch3& {
+    const auto key = std::make_tuple(seed.x, seed.y, seed.yaw);
+    auto it = refined.find(key);
+    if (it == refined.end()) it = refined.emplace(key, refine_match(target, window, seed, all.centre, o, so)).first;
+    return it->second;
   };
-  for (std::size_t r = 0; r < regions.size(); ++r) out[r] = unambiguous_in(regions[r], peaks, refine, target, window, o, wide);
+  for (std::size_t r = 0; r < regions.size(); ++r) out[r] = unambiguous_in(regions[r], peaks[r], refine, target, window, o, wide);
   return out;
 }
 

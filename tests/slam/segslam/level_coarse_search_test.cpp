@@ -151,6 +151,66 @@ TEST(LevelCoarseSearch, PeaksAreTheGreedyExhaustivePeaksBitForBit) {
   }
 }
 
+// The peaks of parts of one grid, searched together (the wide searches of several particles
+// over one candidate), are each part's own greedy exhaustive peaks: every grid pose inside the
+// part scored, the best apart from the earlier ones taken, as if the part were searched alone.
+TEST(LevelCoarseSearch, PeaksWithinPartsAreEachPartsOwnGreedyPeaks) {
+  const Scene& s = scene();
+  const NearOccupiedField field(s.map, level_bound_widths(0.3, s.map.grid().resolution()));
+  const double separation = 1.5, angle_separation = 0.15;
+  const LevelPoseGrid g{3.6, 0.3, 0.35, 0.05};
+  const Pose4 guess = s.truth.compose({1.1, -0.7, 0.0, 0.12});
+  const std::vector<LevelSubgrid> parts{{guess.compose({-1.2, 0.6, 0.0, 0.0}), 1.8, 0.2},
+                                        {guess.compose({1.5, -0.9, 0.0, 0.1}), 2.1, 0.15},
+                                        {guess, g.radius, g.angle}};
+  const auto found = level_search_peaks_within(field, s.window.scored, guess, g, parts, 4, separation, angle_separation);
+  ASSERT_EQ(found.size(), parts.size());
+  const int n = static_cast<int>(g.radius / g.step), na = static_cast<int>(g.angle / g.angle_step);
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const LevelSubgrid& part = parts[k];
+    struct Scored {
+      int a, i, j, score;
+      Pose4 pose;
+    };
+    std::vector<Scored> inside;
+    for (int a = -na; a <= na; ++a) {
+      for (int i = -n; i <= n; ++i) {
+        for (int j = -n; j <= n; ++j) {
+          const Pose4 p{guess.x + i * g.step, guess.y + j * g.step, guess.z, normalize_angle(guess.yaw + a * g.angle_step)};
+          if (std::abs(p.x - part.centre.x) > part.radius + 1e-9 || std::abs(p.y - part.centre.y) > part.radius + 1e-9 ||
+              std::abs(normalize_angle(p.yaw - part.centre.yaw)) > part.angle + 1e-9) {
+            continue;
+          }
+          inside.push_back({a, i, j, near_in_plane_count(field, p, s.window.scored), p});
+        }
+      }
+    }
+    std::vector<Scored> expected;
+    while (expected.size() < 4) {
+      const Scored* best = nullptr;
+      for (const Scored& c : inside) {
+        const bool apart = std::all_of(expected.begin(), expected.end(), [&](const Scored& e) {
+          return std::hypot(c.i - e.i, c.j - e.j) * g.step > separation || std::abs(c.a - e.a) * g.angle_step > angle_separation;
+        });
+        if (apart && c.score > (best ? best->score : 0)) best = &c;
+      }
+      if (!best) break;
+      expected.push_back(*best);
+    }
+    ASSERT_EQ(found[k].size(), expected.size()) << "part " << k;
+    ASSERT_FALSE(expected.empty());
+    for (std::size_t m = 0; m < expected.size(); ++m) {
+      EXPECT_EQ(found[k][m].score, expected[m].score) << "part " << k << ", peak " << m;
+      EXPECT_EQ(found[k][m].pose.x, expected[m].pose.x) << "part " << k << ", peak " << m;
+      EXPECT_EQ(found[k][m].pose.y, expected[m].pose.y) << "part " << k << ", peak " << m;
+    }
+  }
+  // The part spanning the grid is level_search_peaks.
+  const auto whole = level_search_peaks(field, s.window.scored, guess, g, 4, separation, angle_separation);
+  ASSERT_EQ(whole.size(), found[2].size());
+  for (std::size_t m = 0; m < whole.size(); ++m) EXPECT_EQ(whole[m].pose.x, found[2][m].pose.x);
+}
+
 }  // namespace
 }  // namespace lookahead::slam::segslam
 

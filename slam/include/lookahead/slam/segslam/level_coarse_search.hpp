@@ -53,4 +53,23 @@ std::vector<LevelCoarseResult> level_search_peaks(const NearOccupiedField& field
                                                   const Pose4& guess, const LevelPoseGrid& grid, std::size_t count,
                                                   double separation, double angle_separation);
 
+/// A part of a level pose grid: its poses within +-radius [m] of `centre` in x and in y and
+/// within +-angle [rad] of its yaw.
+struct LevelSubgrid {
+  Pose4 centre;
+  double radius = 0.0;
+  double angle = 0.0;
+};
+
+/// level_search_peaks in each part of one grid, the parts sharing the scores and bounds they
+/// have in common (one part spanning the grid is level_search_peaks bit for bit). Why: the
+/// wide re-entry searches of several particles over one candidate (wide_reentry.hpp) cover
+/// overlapping squares; each must find its own best peaks, and most of the cost is scoring.
+std::vector<std::vector<LevelCoarseResult>> level_search_peaks_within(const NearOccupiedField& field,
+                                                                      const Points3& points, const Pose4& guess,
+                                                                      const LevelPoseGrid& grid,
+                                                                      const std::vector<LevelSubgrid>& parts,
+                                                                      std::size_t count, double separation,
+                                                                      double angle_separation);
+
 }  // namespace lookahead::slam::segslam

@@ -64,6 +64,7 @@ class IcpTarget3 {
   long x0_ = 0, y0_ = 0, z0_ = 0, nx_ = 0, ny_ = 0, nz_ = 0;
   std::vector<std::uint32_t> first_;
   std::vector<std::uint32_t> by_cell_;
+  Points3 by_cell_points_;  ///< points_[by_cell_[k]]: a cell's points side by side for nearest()
 };
 
 struct Icp3Result {
