@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -23,18 +22,37 @@ Eigen::Vector3d apply(const Pose4& t, const Eigen::Vector3d& p) {
 
 }  // namespace
 
+// Sorted by bin, then by index, so each bin's points add up in their input order (the order
+// of the ordered map this replaced, whose node allocations were a share of every update:
+// the window is binned at each one).
 Points3 bin_points3(const Points3& points, double bin) {
-  std::map<std::tuple<long, long, long>, std::pair<Eigen::Vector3d, int>> bins;
-  for (const auto& p : points) {
-    auto& [sum, n] = bins[{std::lround(std::floor(p.x() / bin)), std::lround(std::floor(p.y() / bin)),
-                           std::lround(std::floor(p.z() / bin))}];
-    if (n == 0) sum.setZero();
-    sum += p;
-    ++n;
+  struct Keyed {
+    long x, y, z;
+    std::size_t index;
+  };
+  std::vector<Keyed> keyed(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d& p = points[i];
+    keyed[i] = {std::lround(std::floor(p.x() / bin)), std::lround(std::floor(p.y() / bin)),
+                std::lround(std::floor(p.z() / bin)), i};
   }
+  std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+    return std::tie(a.x, a.y, a.z, a.index) < std::tie(b.x, b.y, b.z, b.index);
+  });
   Points3 out;
-  out.reserve(bins.size());
-  for (const auto& [key, sn] : bins) out.push_back(sn.first / sn.second);
+  for (std::size_t first = 0; first < keyed.size();) {
+    std::size_t last = first;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int n = 0;
+    for (; last < keyed.size() && keyed[last].x == keyed[first].x && keyed[last].y == keyed[first].y &&
+           keyed[last].z == keyed[first].z;
+         ++last) {
+      sum += points[keyed[last].index];
+      ++n;
+    }
+    out.push_back(sum / n);
+    first = last;
+  }
   return out;
 }
 

@@ -269,14 +269,18 @@ void SegSlam3d::update(std::size_t k) {
     if (transitions[u].wide) requests[u] = &*transitions[u].wide, waiting.push_back(u);
   }
   std::vector<WideSearch> searches = wide_searches(requests);
-  const int jobs = static_cast<int>(searches.size() + waiting.size());
-#pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count()) if (jobs > 1)
-  for (int j = 0; j < jobs; ++j) {
-    const auto u = static_cast<std::size_t>(j);
-    if (u < searches.size()) {
-      run_wide_search(searches[u], w);
-    } else {
-      step_particle(waiting[u - searches.size()]);
+  // As tasks: a search hands its ICP refinements out as tasks too (wide_reentry.cpp), so the
+  // thread done with the steps helps with the one search there usually is.
+#pragma omp parallel num_threads(thread_count()) if (!waiting.empty())
+#pragma omp single
+  {
+    for (WideSearch& search : searches) {
+#pragma omp task default(shared)
+      run_wide_search(search, w);
+    }
+    for (const std::size_t u : waiting) {
+#pragma omp task default(shared) firstprivate(u)
+      step_particle(u);
     }
   }
   for (WideSearch& search : searches) {

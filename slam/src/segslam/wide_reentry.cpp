@@ -151,14 +151,22 @@ std::vector<WindowMatch3> match_regions_unambiguous(const OctreeMatchTarget& tar
   grid.search_angle = all.angle;
   const std::vector<std::vector<LevelCoarseResult>> peaks = level_search_peaks_within(
       target.field, window.scored, all.centre, coarse_grid(grid), regions, wide.peaks, wide.separation, wide.angle_separation);
-  // A grid pose is refined once, from the covering square's centre: only tau and the weight
-  // depend on it, and unambiguous_in takes them again per region.
+  // Each distinct grid pose is refined once, from the covering square's centre (only tau and
+  // the weight depend on it, and unambiguous_in takes them again per region), as OpenMP tasks:
+  // inside SegSlam3d's update the other thread, done with its particles, takes some of them.
   std::map<std::tuple<double, double, double>, WindowMatch3> refined;
+  for (const auto& region_peaks : peaks) {
+    for (const LevelCoarseResult& p : region_peaks) refined.try_emplace(std::make_tuple(p.pose.x, p.pose.y, p.pose.yaw));
+  }
+  for (auto& [key, m] : refined) {
+    WindowMatch3* result = &m;
+    const Pose4 seed{std::get<0>(key), std::get<1>(key), all.centre.z, std::get<2>(key)};
+#pragma omp task default(shared) firstprivate(result, seed)
+    *result = refine_match(target, window, seed, all.centre, o, so);
+  }
+#pragma omp taskwait
   const auto refine = [&](const Pose4& seed) -> const WindowMatch3& {
-    const auto key = std::make_tuple(seed.x, seed.y, seed.yaw);
-    auto it = refined.find(key);
-    if (it == refined.end()) it = refined.emplace(key, refine_match(target, window, seed, all.centre, o, so)).first;
-    return it->second;
+    return refined.at(std::make_tuple(seed.x, seed.y, seed.yaw));
   };
   for (std::size_t r = 0; r < regions.size(); ++r) out[r] = unambiguous_in(regions[r], peaks[r], refine, target, window, o, wide);
   return out;
