@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 
@@ -260,6 +261,28 @@ void SegSlam3d::update(std::size_t k) {
     warm[u] = p.submap_updates >= options_.extras.warmup_updates || p.submap.parent != kNoSubmap;
     if (!transitions[u].wide) step_particle(u);
   }
+  run_wide_stage(transitions, w, step_particle);
+  // Deviation (as in 2D): a fresh submap has little to weigh its first sweeps against; it
+  // gets the mean factor of the other particles, so starting a submap is neither rewarded
+  // nor punished.
+  double sum = 0;
+  int warm_count = 0;
+  for (std::size_t i = 0; i < gain.size(); ++i) if (warm[i]) sum += gain[i], ++warm_count;
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    if (!warm[i] && warm_count > 0) particles_[i].log_weight += sum / warm_count - gain[i];
+  }
+  for (const SegParticle3& p : particles_) stats_.locked_updates += p.submap.locked ? 1 : 0;
+  store_transitions(transitions);
+  last_update_ = k;
+  ++stats_.updates;
+  bool resampled = false;
+  stats_.neff.push_back(resample_if_degenerate(particles_, options_.filter.resample_threshold, rng_, resampled));
+  if (resampled) ++stats_.resamplings;
+  if (stats_.updates % 10 == 0) prune();
+}
+
+void SegSlam3d::run_wide_stage(std::vector<Transition>& transitions, const SweepWindow& w,
+                               const std::function<void(std::size_t)>& step_particle) {
   // The wide searches asked for, one per segment (seg_slam3d_wide.cpp), beside the steps of
   // the particles that asked (a step does not need its particle's search: the re-entry it
   // finds waits for the next attempt).
@@ -289,23 +312,6 @@ void SegSlam3d::update(std::size_t k) {
       apply_wide(particles_[search.members[m]], *t.wide, search.results[m], t.attempts);
     }
   }
-  // Deviation (as in 2D): a fresh submap has little to weigh its first sweeps against; it
-  // gets the mean factor of the other particles, so starting a submap is neither rewarded
-  // nor punished.
-  double sum = 0;
-  int warm_count = 0;
-  for (std::size_t i = 0; i < gain.size(); ++i) if (warm[i]) sum += gain[i], ++warm_count;
-  for (std::size_t i = 0; i < particles_.size(); ++i) {
-    if (!warm[i] && warm_count > 0) particles_[i].log_weight += sum / warm_count - gain[i];
-  }
-  for (const SegParticle3& p : particles_) stats_.locked_updates += p.submap.locked ? 1 : 0;
-  store_transitions(transitions);
-  last_update_ = k;
-  ++stats_.updates;
-  bool resampled = false;
-  stats_.neff.push_back(resample_if_degenerate(particles_, options_.filter.resample_threshold, rng_, resampled));
-  if (resampled) ++stats_.resamplings;
-  if (stats_.updates % 10 == 0) prune();
 }
 
 void SegSlam3d::store_transitions(std::vector<Transition>& transitions) {

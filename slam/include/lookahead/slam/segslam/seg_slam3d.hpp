@@ -24,6 +24,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -200,6 +201,10 @@ class SegSlam3d {
   [[nodiscard]] std::vector<WideSearch> wide_searches(const std::vector<const WideRequest*>& requests) const;
   void run_wide_search(WideSearch& search, const SweepWindow& w);
   void apply_wide(SegParticle3& p, const WideRequest& request, WindowMatch3 m, std::vector<MatchAttempt3>& attempts);
+  /// The wide searches the particles asked for, beside the steps of those particles
+  /// (step_particle(i)), their results applied.
+  void run_wide_stage(std::vector<Transition>& transitions, const SweepWindow& w,
+                      const std::function<void(std::size_t)>& step_particle);
   [[nodiscard]] std::pair<std::size_t, Pose4> nearest_path_pose(std::size_t candidate, const Eigen::Vector3d& p) const;
   [[nodiscard]] MatchAttempt3 attempt_of(std::size_t candidate, const Pose4& guess, double path_distance,
                                          double chain_error, const std::optional<MatchingOptions>& wide) const;
