@@ -189,23 +189,20 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
                                    std::lround(guess.z / 0.5), std::lround(guess.yaw / angle_step));
   WindowMatch3 m;
   bool found = false;
-  std::shared_ptr<const OctreeMatchTarget> target;
   {
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     ++stats_.match_requests;
     const auto it = match_cache_.find(key);
     if (it != match_cache_.end()) m = it->second, found = true;
-    target = targets_[candidate];
   }
   if (!found) {
     const auto start = std::chrono::steady_clock::now();
     // Searched from the rounded guess: the result does not depend on which particle asked.
     const Pose4 rounded{std::get<1>(key) * step, std::get<2>(key) * step, std::get<3>(key) * 0.5,
                         normalize_angle(std::get<4>(key) * angle_step)};
-    if (!target) target = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
-    m = match_window(*target, window_with_structure(w), rounded, candidate_options(candidate), options_.extras.structure);
+    m = match_window(*target_of(candidate), window_with_structure(w), rounded, candidate_options(candidate),
+                     options_.extras.structure);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
-    targets_[candidate] = target;
     match_cache_.emplace(key, m);
     ++stats_.match_attempts;
     stats_.matching_seconds += seconds_since(start);
