@@ -13,6 +13,7 @@
 
 #include "commands.hpp"
 #include "lookahead/slam/config/slam3d_config.hpp"
+#include "lookahead/slam/eval/octree_map_entropy.hpp"
 #include "lookahead/slam/io/map_picture.hpp"
 #include "lookahead/slam/octree/octree_io.hpp"
 #include "lookahead/slam/octree/octree_top_view.hpp"
@@ -153,6 +154,8 @@ void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& fil
   j["peak_memory_mb"] = peak_memory_mb();
   j["memory"] = memory_json(filter);
   j["map_known_voxels"] = map.known_voxels();
+  // Eq. 22 of the best particle's map, to compare with SegSLAM's minimum-entropy map sample.
+  j["map_entropy_nats_m3"] = slam::octree_map_entropy(map);
   if (!truth.empty()) {
     const Eigen::Vector3d& end = truth.back().translation();
     double length = 0;

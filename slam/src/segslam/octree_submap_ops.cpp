@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "lookahead/slam/eval/octree_map_entropy.hpp"
 #include "lookahead/slam/segslam/level_coarse_search.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
 
@@ -128,7 +129,13 @@ WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& w,
   WindowMatch3 m;
   m.rejection = "too few points";
   if (target.icp.size() < 10 || w.cloud.size() < 10) return m;
-  const Icp3Result icp = icp_point_to_plane(w.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance});
+  return judge_fit(target, w, icp_point_to_plane(w.cloud, target.icp, seed, {o.icp_iterations, o.icp_max_distance}),
+                   guess, o, so);
+}
+
+WindowMatch3 judge_fit(const OctreeMatchTarget& target, const SweepWindow& w, const Icp3Result& icp, const Pose4& guess,
+                       const MatchingOptions& o, const StructureTestOptions& so) {
+  WindowMatch3 m;
   m.pose = icp.transform;
   m.all_points_error = icp.mean_error;
   m.translation = (m.pose.position() - guess.position()).norm();
@@ -184,10 +191,7 @@ EvidenceOctree OctreeCanvas::to_octree() const {
 
 double OctreeCanvas::entropy() const {
   double h = 0;
-  for (const auto& [k, l] : cells_) {
-    const double p = 1.0 / (1.0 + std::exp(-std::clamp(l, options_.log_odds_min, options_.log_odds_max)));
-    h -= p * std::log(p) + (1 - p) * std::log(1 - p);
-  }
+  for (const auto& [k, l] : cells_) h += voxel_entropy(std::clamp(l, options_.log_odds_min, options_.log_odds_max));
   return h * std::pow(options_.resolution, 3);
 }
 

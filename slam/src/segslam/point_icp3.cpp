@@ -165,6 +165,23 @@ long IcpTarget3::nearest(const Eigen::Vector3d& q) const {
   return best;
 }
 
+Icp3Result point_to_plane_fit(const Points3& source, const IcpTarget3& target, const Pose4& pose) {
+  Icp3Result r;
+  r.transform = pose;
+  double error = 0;
+  int inliers = 0;
+  for (const auto& p : source) {
+    const Eigen::Vector3d q = apply(pose, p);
+    const long j = target.nearest(q);
+    if (j < 0 || target.normal(j).isZero()) continue;
+    error += std::abs(target.normal(j).dot(q - target.point(j)));
+    ++inliers;
+  }
+  r.inlier_ratio = source.empty() ? 0.0 : static_cast<double>(inliers) / static_cast<double>(source.size());
+  r.mean_error = inliers > 0 ? error / inliers : 0.0;
+  return r;
+}
+
 Icp3Result icp_point_to_plane(const Points3& source, const IcpTarget3& target, const Pose4& initial,
                               const Icp3Options& o) {
   Icp3Result r;

@@ -11,7 +11,9 @@
 #include <limits>
 #include <utility>
 
+#include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/segslam/candidate_reach.hpp"
+#include "lookahead/slam/segslam/localization_match3.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
@@ -200,16 +202,29 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
     // Searched from the rounded guess: the result does not depend on which particle asked.
     const Pose4 rounded{std::get<1>(key) * step, std::get<2>(key) * step, std::get<3>(key) * 0.5,
                         normalize_angle(std::get<4>(key) * angle_step)};
-    m = match_window(*target_of(candidate), window_with_structure(w), rounded, candidate_options(candidate),
-                     options_.extras.structure);
+    const MatchingOptions o = candidate_options(candidate);
+    // Sec. 4.5.2: eq. 18 (coarse search and ICP) or the localisation filter of eq. 19.
+    m = o.use_localization_filter
+            ? localize_window3(segmap_.at(candidate).map, *target_of(candidate), window_with_structure(w), rounded, o,
+                               options_.filter.likelihood, options_.extras.structure,
+                               localization_seed(key))
+            : match_window(*target_of(candidate), window_with_structure(w), rounded, o, options_.extras.structure);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     match_cache_.emplace(key, m);
     ++stats_.match_attempts;
     stats_.matching_seconds += seconds_since(start);
   }
   m.translation = (m.pose.position() - guess.position()).norm();
-  m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;
+  m.weight = m.ok ? m.spread_factor * match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;
   return m;
+}
+
+std::uint64_t SegSlam3d::localization_seed(const MatchKey& key) const {
+  // From the cache key, not the asking particle: the same match whatever the thread order.
+  const auto [candidate, x, y, z, yaw] = key;
+  const std::uint64_t a = mix_seed(options_.filter.seed, stats_.updates, candidate);
+  return mix_seed(a, static_cast<std::uint64_t>(x) * 0x1000003ull + static_cast<std::uint64_t>(y),
+                  static_cast<std::uint64_t>(z) * 0x10001ull + static_cast<std::uint64_t>(yaw));
 }
 
 MatchingOptions SegSlam3d::candidate_options(std::size_t candidate) const {

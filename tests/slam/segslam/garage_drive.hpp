@@ -22,6 +22,18 @@ inline const RangeLog3& garage_log() {
   return log;
 }
 
+/// Along the garage's first aisle and back, twice (66 sweeps): the later legs re-enter the
+/// first legs' submaps.
+inline const RangeLog3& aisle_back_and_forth() {
+  static const RangeLog3 log = [] {
+    World3 w = make_garage_world(1, 0.2);
+    const Eigen::Vector3d a{8, 7, 0}, b{20, 7, 0};
+    w.route = {a, b, a, b, a};
+    return simulate_cave_crawler(w, {}, 2);
+  }();
+  return log;
+}
+
 /// A map of sweeps [first, last] inserted at their true poses, in the world frame.
 inline EvidenceOctree map_of(const RangeLog3& log, std::size_t first, std::size_t last) {
   EvidenceOctree map;

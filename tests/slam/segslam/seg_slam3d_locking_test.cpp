@@ -18,6 +18,7 @@
 namespace lookahead::slam::segslam {
 namespace {
 
+using test_data::aisle_back_and_forth;
 using test_data::garage_log;
 using test_data::map_of;
 
@@ -103,18 +104,6 @@ TEST(SegSlam3dLocking, RejectsImpossibleLockingOptions) {
   const SegSlam3dOptions defaults;
   EXPECT_FALSE(defaults.segslam.locking.lock);  // off by default, as in 2D
   EXPECT_FALSE(defaults.segslam.locking.merge);
-}
-
-// Along the garage's first aisle and back, twice (66 sweeps): the later legs re-enter
-// the first legs' submaps.
-const RangeLog3& aisle_back_and_forth() {
-  static const RangeLog3 log = [] {
-    World3 w = make_garage_world(1, 0.2);
-    const Eigen::Vector3d a{8, 7, 0}, b{20, 7, 0};
-    w.route = {a, b, a, b, a};
-    return simulate_cave_crawler(w, {}, 2);
-  }();
-  return log;
 }
 
 SegSlam3dOptions options_for_aisle(bool lock_and_merge) {

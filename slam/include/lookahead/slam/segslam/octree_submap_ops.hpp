@@ -76,6 +76,9 @@ struct WindowMatch3 {
   const char* rejection = "";  ///< why the match failed (empty when ok): for the debug log
   /// Wide re-entry search only (wide_reentry.hpp): distinct poses that passed the tests.
   std::size_t modes = 0;
+  /// Eq. 19's p(|Sigma_X|) when the localisation filter matched (localization_match3.hpp);
+  /// 1 for ICP. The match's weight is this times eq. 18's.
+  double spread_factor = 1.0;
 };
 
 /// Sec. 4.5: a coarse search (x, y, yaw around `guess`, share of points near occupied voxels)
@@ -89,6 +92,10 @@ WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& wi
 /// scores are left 0); tau and the eq. 18 weight are taken against `guess`.
 WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& seed,
                           const Pose4& guess, const MatchingOptions& options, const StructureTestOptions& structure = {});
+/// The acceptance tests and eq. 18 weight of the window placed by `fit` (ICP's result, or a
+/// pose found otherwise with point_to_plane_fit's statistics): refine_match after its ICP.
+WindowMatch3 judge_fit(const OctreeMatchTarget& target, const SweepWindow& window, const Icp3Result& fit,
+                       const Pose4& guess, const MatchingOptions& options, const StructureTestOptions& structure = {});
 
 /// Sec. 6 merging, as the 2D add_child_evidence: adds to `into` (the parent) the voxels of
 /// `child` (a match copy of it, same frame) that `into` never observed, with the child's

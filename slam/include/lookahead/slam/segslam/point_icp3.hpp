@@ -73,6 +73,10 @@ struct Icp3Result {
   double inlier_ratio = 0.0;  ///< share of source points with a correspondence
 };
 
+/// How `source` placed at `pose` fits `target` without moving it: ICP's correspondences
+/// (nearest within max_distance, with a normal) and their mean point-to-plane distance.
+Icp3Result point_to_plane_fit(const Points3& source, const IcpTarget3& target, const Pose4& pose);
+
 /// Point-to-plane ICP (Gauss-Newton on x, y, z, yaw) of `source` onto `target` from `initial`.
 Icp3Result icp_point_to_plane(const Points3& source, const IcpTarget3& target, const Pose4& initial,
                               const Icp3Options& options);

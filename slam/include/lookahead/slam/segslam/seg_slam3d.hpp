@@ -211,6 +211,9 @@ class SegSlam3d {
   MatchEvent3 offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const;
   WindowMatch3 capped_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
   WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
+  /// A capped search's cache key: candidate, guess cell (x, y, z, yaw).
+  using MatchKey = std::tuple<std::size_t, long, long, long, long>;
+  [[nodiscard]] std::uint64_t localization_seed(const MatchKey& key) const;
   std::shared_ptr<const OctreeMatchTarget> target_of(std::size_t candidate);
   std::optional<WindowMatch3> confirm_pending(SegParticle3& p, const SweepWindow& w, std::vector<MatchAttempt3>& attempts);
   [[nodiscard]] double error_since(std::size_t candidate) const;
@@ -239,7 +242,7 @@ class SegSlam3d {
   SegSlam3dStatistics stats_;
   std::mutex cache_mutex_;
   std::map<std::size_t, std::shared_ptr<const OctreeMatchTarget>> targets_;
-  std::map<std::tuple<std::size_t, long, long, long, long>, WindowMatch3> match_cache_;
+  std::map<MatchKey, WindowMatch3> match_cache_;
   std::mutex window_mutex_;
   std::optional<SweepWindow> matched_window_;  ///< this update's window with its structure
 };
