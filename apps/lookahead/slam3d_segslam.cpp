@@ -149,6 +149,7 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
   j["match_attempts"] = st.match_attempts;
   j["match_requests"] = st.match_requests;
   j["wide_match_attempts"] = st.wide_attempts;
+  j["capped_searches"] = st.capped_searches;  // grouped: each answers several of match_attempts
   j["matching_thread_s"] = st.matching_seconds;
   j["wide_matching_thread_s"] = st.wide_matching_seconds;
   j["pruned_submaps"] = st.pruned;

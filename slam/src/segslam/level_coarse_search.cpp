@@ -233,4 +233,15 @@ std::vector<std::vector<LevelCoarseResult>> level_search_peaks_within(const Near
   return out;
 }
 
+LevelSubgrid covering_subgrid(const LevelSubgrid& first, const std::vector<LevelSubgrid>& parts) {
+  LevelSubgrid out{first.centre, first.radius, first.angle};
+  for (const LevelSubgrid& r : parts) {
+    const double offset = std::max(std::abs(r.centre.x - first.centre.x), std::abs(r.centre.y - first.centre.y));
+    out.radius = std::max(out.radius, offset + r.radius);
+    out.angle = std::max(out.angle, std::abs(normalize_angle(r.centre.yaw - first.centre.yaw)) + r.angle);
+  }
+  out.angle = std::min(out.angle, M_PI);
+  return out;
+}
+
 }  // namespace lookahead::slam::segslam

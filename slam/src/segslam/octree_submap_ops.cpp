@@ -2,6 +2,8 @@
 #include "lookahead/slam/segslam/octree_submap_ops.hpp"
 
 #include <algorithm>
+#include <map>
+#include <tuple>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -122,6 +124,63 @@ WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w,
   m.guess_score = share_of(near_in_plane_count(target.field, guess, w.scored), w.scored);
   m.coarse_score = share_of(seed.score, w.scored);
   return m;
+}
+
+std::vector<std::vector<LevelCoarseResult>> region_peaks(const OctreeMatchTarget& target, const SweepWindow& w,
+                                                         const std::vector<LevelSubgrid>& regions, const MatchingOptions& o,
+                                                         std::size_t count, double separation, double angle_separation) {
+  const LevelSubgrid all = covering_subgrid(regions.front(), regions);
+  MatchingOptions grid = o;
+  grid.search_radius = all.radius;
+  grid.search_angle = all.angle;
+  return level_search_peaks_within(target.field, w.scored, all.centre, coarse_grid(grid), regions, count, separation,
+                                   angle_separation);
+}
+
+RefinedMatches refine_each(const OctreeMatchTarget& target, const SweepWindow& w, const std::vector<Pose4>& seeds,
+                           const MatchingOptions& o, const StructureTestOptions& so) {
+  RefinedMatches refined;
+  for (const Pose4& p : seeds) refined.try_emplace(std::make_tuple(p.x, p.y, p.z, p.yaw));
+  for (auto& [key, m] : refined) {
+    WindowMatch3* result = &m;
+    const Pose4 seed{std::get<0>(key), std::get<1>(key), std::get<2>(key), std::get<3>(key)};
+#pragma omp task default(shared) firstprivate(result, seed)
+    *result = refine_match(target, w, seed, seed, o, so);
+  }
+#pragma omp taskwait
+  return refined;
+}
+
+std::vector<WindowMatch3> match_regions(const OctreeMatchTarget& target, const SweepWindow& w,
+                                        const std::vector<LevelSubgrid>& regions, const MatchingOptions& o,
+                                        const StructureTestOptions& so) {
+  WindowMatch3 few;
+  few.rejection = "too few points";
+  std::vector<WindowMatch3> out(regions.size(), few);
+  if (regions.empty() || target.icp.size() < 10 || w.cloud.size() < 10) return out;
+  // One peak per region: the separations do not matter.
+  const std::vector<std::vector<LevelCoarseResult>> peaks = region_peaks(target, w, regions, o, 1, 1.0, 1.0);
+  std::vector<LevelCoarseResult> seeds(regions.size());
+  std::vector<Pose4> poses;
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    // As level_search_branch_and_bound: the guess stands unless a grid pose scores more.
+    seeds[r] = {regions[r].centre, near_in_plane_count(target.field, regions[r].centre, w.scored)};
+    if (!peaks[r].empty() && peaks[r].front().score > seeds[r].score) seeds[r] = {peaks[r].front().pose, peaks[r].front().score};
+    seeds[r].pose.z = regions[r].centre.z;
+    poses.push_back(seeds[r].pose);
+  }
+  const RefinedMatches refined = refine_each(target, w, poses, o, so);
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const Pose4& s = seeds[r].pose;
+    WindowMatch3 m = refined.at(std::make_tuple(s.x, s.y, s.z, s.yaw));
+    const LevelSubgrid& region = regions[r];
+    m.translation = (m.pose.position() - region.centre.position()).norm();
+    m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
+    m.guess_score = share_of(near_in_plane_count(target.field, region.centre, w.scored), w.scored);
+    m.coarse_score = share_of(seeds[r].score, w.scored);
+    out[r] = m;
+  }
+  return out;
 }
 
 WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& w, const Pose4& seed, const Pose4& guess,

@@ -19,6 +19,7 @@
 #include "lookahead/slam/segslam/segmentation.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
 #include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
+#include "seg_slam3d_transition.hpp"
 
 namespace lookahead::slam::segslam {
 
@@ -42,16 +43,6 @@ SegSlamOptions segslam3d_defaults() {
   o.offline.map_samples = 5;
   return o;
 }
-
-struct SegSlam3d::Transition {
-  bool closed_one = false;
-  OctreeSubmap closed;
-  double closed_entry_error = 0.0;  ///< err_ICP of the match that opened `closed` (merging)
-  std::size_t candidate = kNoSubmap;
-  std::vector<MatchEvent3> offers;  ///< the matches offered; the one taken is `chosen`
-  std::vector<MatchAttempt3> attempts;  ///< the candidates considered (record_attempts only)
-  std::optional<WideRequest> wide;      ///< the wide search asked for, run after the predictions
-};
 
 /// Dead reckoning from the last update's sweep to this one, and this sweep's beams.
 struct SegSlam3d::SweepModel {
@@ -142,7 +133,7 @@ SweepWindow SegSlam3d::window_after(std::size_t sweep) const {
                            false);
 }
 
-SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng) {
+SegSlam3d::Transition SegSlam3d::ask_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng) {
   Transition t;
   const SegmentationOptions& so = options_.segslam.segmentation;
   const MatchingOptions& mo = options_.segslam.matching;
@@ -150,23 +141,29 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
   const bool score_it = p.submap_updates >= so.min_segment_updates && p.motion_error < so.max_motion_error &&
                         so.predictive_threshold > 0;
   const double score = score_it ? predictive_score(p.submap.map, p.pose, w) : -1.0;
-  const bool segment = should_segment(p.submap_updates, p.motion_error, score, so);
-  std::vector<std::size_t> ids;
-  std::vector<Pose4> guesses;
-  std::vector<WindowMatch3> matches;
+  t.segment = should_segment(p.submap_updates, p.motion_error, score, so);
   const bool periodic = p.updates_since_match >= mo.period_updates && p.submap_updates >= mo.period_updates;
-  if (segment || periodic) {
-    matches = match_candidates(p, w, ids, guesses, t.attempts, t.wide, rng);
+  if (t.segment || periodic) {
+    ask_matches(p, w, t, rng);
     p.updates_since_match = 0;
   }
+  return t;
+}
+
+void SegSlam3d::choose_submap(SegParticle3& p, Transition& t, const SweepWindow& w, std::mt19937_64& rng) {
+  const MatchingOptions& mo = options_.segslam.matching;
+  collect_matches(p, w, t);
+  const std::vector<std::size_t>& ids = t.ids;
+  const std::vector<WindowMatch3>& matches = t.matches;
+  const bool segment = t.segment;
   std::vector<double> weights;
   for (std::size_t i = 0; i < matches.size(); ++i) {
     weights.push_back(matches[i].weight);
-    t.offers.push_back(offer_of(ids[i], guesses[i], matches[i]));
+    t.offers.push_back(offer_of(ids[i], t.guesses[i], matches[i]));
   }
   const ChoiceDraw draw = draw_submap_choice(segment, weights, mo, rng);  // eq. 3
   if (draw.choice == SubmapChoice::kMatch) t.offers[draw.match].chosen = true;
-  if (draw.choice == SubmapChoice::kSame) return t;
+  if (draw.choice == SubmapChoice::kSame) return;
   // A pending wide re-entry (wide_reentry.hpp) follows the particle into a fresh frame, which
   // starts at its pose; a match moves it into another candidate's frame, and it is dropped.
   if (p.pending) p.pending = draw.choice == SubmapChoice::kNew ? std::optional(carried_into(*p.pending, p.pose)) : std::nullopt;
@@ -196,7 +193,6 @@ SegSlam3d::Transition SegSlam3d::predict_submap(SegParticle3& p, const SweepWind
   p.pose = p.submap.entry;
   p.submap_updates = 0;
   p.motion_error = 0.0;
-  return t;
 }
 
 void SegSlam3d::advance(SegParticle3& p, const SweepModel& s, std::mt19937_64& rng) const {
@@ -252,12 +248,21 @@ void SegSlam3d::update(std::size_t k) {
     advance(particles_[u], s, rngs[u]);
     gain[u] = particles_[u].log_weight - before;
   };
+  // Prediction (eq. 3) in three steps: each particle asks for its matches, the capped searches
+  // run for all of them together (seg_slam3d_capped.cpp), each particle draws its submap and
+  // steps; the wide searches asked for run last, beside the steps of the particles that asked.
+#pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
+  for (int i = 0; i < n; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    rngs[u].seed(mix_seed(options_.filter.seed, stats_.updates, static_cast<std::uint64_t>(i)));
+    transitions[u] = ask_submap(particles_[u], w, rngs[u]);
+  }
+  run_capped_stage(transitions, w);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
   for (int i = 0; i < n; ++i) {
     const auto u = static_cast<std::size_t>(i);
     SegParticle3& p = particles_[u];
-    rngs[u].seed(mix_seed(options_.filter.seed, stats_.updates, static_cast<std::uint64_t>(i)));
-    transitions[u] = predict_submap(p, w, rngs[u]);
+    choose_submap(p, transitions[u], w, rngs[u]);
     warm[u] = p.submap_updates >= options_.extras.warmup_updates || p.submap.parent != kNoSubmap;
     if (!transitions[u].wide) step_particle(u);
   }

@@ -2,9 +2,10 @@
 // SegSLAM 3D's matching step (Fairfield et al. 2010, sec. 4.5): the candidates of a particle's
 // local map sample, winnowed (sec. 4.5.1), matched (sec. 4.5.2: the capped search of
 // candidate_reach.hpp, then the wide unambiguous search of wide_reentry.hpp) and weighted by
-// eq. 18; the capped searches are cached per update and shared by the particles, the wide
-// ones are asked for here and run after the predictions, one per segment
-// (seg_slam3d_wide.cpp). Split out of seg_slam3d.cpp, whose filter loop calls it.
+// eq. 18 (or eq. 19: localization_match3.hpp). Both searches are asked for here and run for
+// all particles together: the capped ones before the particles draw (seg_slam3d_capped.cpp),
+// the wide ones after (seg_slam3d_wide.cpp). Split out of seg_slam3d.cpp, whose filter loop
+// calls it.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -19,6 +20,7 @@
 #include "lookahead/slam/segslam/submap_choice.hpp"
 #include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
 #include "lookahead/slam/segslam/wide_reentry.hpp"
+#include "seg_slam3d_transition.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {
@@ -48,39 +50,30 @@ const SweepWindow& SegSlam3d::window_with_structure(const SweepWindow& w) {
   return *matched_window_;
 }
 
-struct SegSlam3d::Candidate {
-  bool wide_only;  ///< beyond the capped reach, within the wide one (wide_reentry.hpp)
-  std::optional<MatchingOptions> wide;
-  double distance;
-  std::size_t id;
-  Pose4 guess;
-  std::size_t attempt;  ///< index into the attempts when recording
-};
-
-std::vector<WindowMatch3> SegSlam3d::match_candidates(SegParticle3& p, const SweepWindow& w,
-                                                      std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
-                                                      std::vector<MatchAttempt3>& attempts,
-                                                      std::optional<WideRequest>& wide_request, std::mt19937_64& rng) {
-  const bool record = options_.extras.record_attempts;
-  std::vector<WindowMatch3> out;
+void SegSlam3d::ask_matches(SegParticle3& p, const SweepWindow& w, Transition& t, std::mt19937_64& rng) {
   // Last attempt's wide re-entry, offered if this window confirms it.
   const std::optional<std::size_t> pending = p.pending ? std::optional(p.pending->candidate) : std::nullopt;
   const Pose4 pending_guess = p.pending ? p.pending->guess_frame.compose(p.pose) : Pose4{};
-  double pending_weight = 0.0;
-  if (const std::optional<WindowMatch3> m = confirm_pending(p, w, attempts)) {
-    ids.push_back(*pending);
-    guesses.push_back(pending_guess);
-    out.push_back(*m);
+  if (const std::optional<WindowMatch3> m = confirm_pending(p, w, t.attempts)) {
+    t.ids.push_back(*pending);
+    t.guesses.push_back(pending_guess);
+    t.matches.push_back(*m);
     // Confirmed, it stays pending at the confirmed pose: offered again at every attempt
     // whose window confirms it, until taken or contradicted.
     p.pending = pending_of(*pending, m->pose, pending_guess, p.pose);
-    pending_weight = m->weight;
+    t.pending_weight = m->weight;
   }
-  const std::vector<Candidate> candidates = winnow(p, out.empty() ? kNoSubmap : ids.front(), attempts, rng);
+  t.candidates = winnow(p, t.ids.empty() ? kNoSubmap : t.ids.front(), t.attempts, rng);
+  t.screens.assign(t.candidates.size(), WindowMatch3{});
+}
+
+void SegSlam3d::collect_matches(SegParticle3& p, const SweepWindow& w, Transition& t) {
+  const bool record = options_.extras.record_attempts;
   bool wide_searched = false;
-  for (const Candidate& c : candidates) {
+  for (std::size_t k = 0; k < t.candidates.size(); ++k) {
+    const Candidate& c = t.candidates[k];
     WindowMatch3 m;
-    if (!c.wide_only) m = capped_match(c.id, c.guess, w);
+    if (!c.wide_only) m = capped_result(c, t.screens[k], w);
     // The wide stage where the capped search found nothing and the candidate's uncertainty
     // reaches beyond it; for the nearest such candidate only (its cost: the stage ran for
     // every candidate at first, and 10 particles took 5-8 times main's time).
@@ -89,18 +82,17 @@ std::vector<WindowMatch3> SegSlam3d::match_candidates(SegParticle3& p, const Swe
     if (!m.ok && !wide_searched && c.wide.has_value() && !backed_off) {
       // Run after this update's predictions, with the other particles' of the segment
       // (seg_slam3d_wide.cpp); its result is never offered at this attempt anyway.
-      wide_request = WideRequest{c.id, c.guess, *c.wide, c.attempt, pending_weight, p.pose, std::nullopt, false};
+      t.wide = WideRequest{c.id, c.guess, *c.wide, c.attempt, t.pending_weight, p.pose, std::nullopt, false};
       wide_searched = true;
       continue;
     }
     if (backed_off && c.wide_only) m.rejection = "backed off";
-    if (record) this->record(attempts[c.attempt], c.id, m, false);
+    if (record) this->record(t.attempts[c.attempt], c.id, m, false);
     if (!m.ok) continue;
-    ids.push_back(c.id);
-    guesses.push_back(c.guess);
-    out.push_back(m);
+    t.ids.push_back(c.id);
+    t.guesses.push_back(c.guess);
+    t.matches.push_back(m);
   }
-  return out;
 }
 
 void SegSlam3d::record(MatchAttempt3& a, std::size_t candidate, const WindowMatch3& m, bool wide) const {
@@ -174,21 +166,31 @@ std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::
   return candidates;
 }
 
-WindowMatch3 SegSlam3d::capped_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w) {
+WindowMatch3 SegSlam3d::capped_result(const Candidate& c, WindowMatch3 screen, const SweepWindow& w) {
   // Screened on the segment's first copy (MatchingOptions::share_by_segment): where that
   // finds nothing, so do the others; a match found there is fitted again to this copy.
-  const std::size_t first = options_.segslam.matching.share_by_segment ? segmap_.first_copy(candidate) : candidate;
-  if (first != candidate) {
-    WindowMatch3 screen = cached_match(first, guess, w);
-    if (!screen.ok) return screen;
-  }
-  return cached_match(candidate, guess, w);
+  const std::size_t first = options_.segslam.matching.share_by_segment ? segmap_.first_copy(c.id) : c.id;
+  if (first != c.id && screen.ok) return cached_match(c.id, c.guess, w);
+  const MatchingOptions o = candidate_options(c.id);
+  screen.translation = (screen.pose.position() - c.guess.position()).norm();
+  screen.weight = screen.ok ? screen.spread_factor * match_weight(screen.icp_error, screen.translation, o) : 0.0;
+  return screen;
+}
+
+LevelSubgrid SegSlam3d::capped_region(const Pose4& guess, const MatchingOptions& reach) {
+  const LevelPoseGrid coarse = coarse_grid(reach);
+  const double step = 2 * coarse.step, angle_step = 2 * coarse.angle_step;
+  const auto round_to = [](double v, double s) { return static_cast<double>(std::lround(v / s)) * s; };
+  return {{round_to(guess.x, step), round_to(guess.y, step), round_to(guess.z, 0.5),
+           normalize_angle(round_to(guess.yaw, angle_step))},
+          reach.search_radius, reach.search_angle};
 }
 
 WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w) {
-  constexpr double step = 0.5, angle_step = 0.1;
-  const auto key = std::make_tuple(candidate, std::lround(guess.x / step), std::lround(guess.y / step),
-                                   std::lround(guess.z / 0.5), std::lround(guess.yaw / angle_step));
+  const MatchingOptions o = candidate_options(candidate);
+  // Searched from the rounded guess: the result does not depend on which particle asked.
+  const LevelSubgrid region = capped_region(guess, o);
+  const MatchKey key = key_of(candidate, region);
   WindowMatch3 m;
   bool found = false;
   {
@@ -199,24 +201,32 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
   }
   if (!found) {
     const auto start = std::chrono::steady_clock::now();
-    // Searched from the rounded guess: the result does not depend on which particle asked.
-    const Pose4 rounded{std::get<1>(key) * step, std::get<2>(key) * step, std::get<3>(key) * 0.5,
-                        normalize_angle(std::get<4>(key) * angle_step)};
-    const MatchingOptions o = candidate_options(candidate);
-    // Sec. 4.5.2: eq. 18 (coarse search and ICP) or the localisation filter of eq. 19.
-    m = o.use_localization_filter
-            ? localize_window3(segmap_.at(candidate).map, *target_of(candidate), window_with_structure(w), rounded, o,
-                               options_.filter.likelihood, options_.extras.structure,
-                               localization_seed(key))
-            : match_window(*target_of(candidate), window_with_structure(w), rounded, o, options_.extras.structure);
+    m = capped_search(candidate, region, o, w);
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     match_cache_.emplace(key, m);
     ++stats_.match_attempts;
     stats_.matching_seconds += seconds_since(start);
   }
   m.translation = (m.pose.position() - guess.position()).norm();
-  m.weight = m.ok ? m.spread_factor * match_weight(m.icp_error, m.translation, candidate_options(candidate)) : 0.0;
+  m.weight = m.ok ? m.spread_factor * match_weight(m.icp_error, m.translation, o) : 0.0;
   return m;
+}
+
+WindowMatch3 SegSlam3d::capped_search(std::size_t candidate, const LevelSubgrid& region, const MatchingOptions& o,
+                                      const SweepWindow& w) {
+  // Sec. 4.5.2: eq. 18 (coarse search and ICP) or the localisation filter of eq. 19.
+  if (o.use_localization_filter) {
+    return localize_window3(segmap_.at(candidate).map, *target_of(candidate), window_with_structure(w), region.centre,
+                            o, options_.filter.likelihood, options_.extras.structure,
+                            localization_seed(key_of(candidate, region)));
+  }
+  return match_window(*target_of(candidate), window_with_structure(w), region.centre, o, options_.extras.structure);
+}
+
+SegSlam3d::MatchKey SegSlam3d::key_of(std::size_t candidate, const LevelSubgrid& region) {
+  // The region's centre is on the lattice: to the millimetre and the 1e-4 rad it names it.
+  return {candidate, std::lround(region.centre.x * 1e3), std::lround(region.centre.y * 1e3),
+          std::lround(region.centre.z * 1e3), std::lround(region.centre.yaw * 1e4)};
 }
 
 std::uint64_t SegSlam3d::localization_seed(const MatchKey& key) const {

@@ -58,7 +58,7 @@ std::vector<SegSlam3d::WideSearch> SegSlam3d::wide_searches(const std::vector<co
     // from the others would make the square, and its cost, grow).
     WideSearch* joined = nullptr;
     for (const std::size_t g : groups) {
-      const WideRegion all = covering_region(out[g].regions.front(), {region});
+      const WideRegion all = covering_subgrid(out[g].regions.front(), {region});
       if (all.radius <= std::max(w.max_radius, out[g].regions.front().radius) &&
           all.angle <= std::max(w.max_angle, out[g].regions.front().angle)) {
         joined = &out[g];

@@ -81,17 +81,6 @@ WindowMatch3 match_window_unambiguous(const OctreeMatchTarget& target, const Swe
   return match_regions_unambiguous(target, window, {{guess, o.search_radius, o.search_angle}}, o, so, wide).front();
 }
 
-WideRegion covering_region(const WideRegion& first, const std::vector<WideRegion>& regions) {
-  WideRegion out{first.centre, first.radius, first.angle};
-  for (const WideRegion& r : regions) {
-    const double offset = std::max(std::abs(r.centre.x - first.centre.x), std::abs(r.centre.y - first.centre.y));
-    out.radius = std::max(out.radius, offset + r.radius);
-    out.angle = std::max(out.angle, std::abs(normalize_angle(r.centre.yaw - first.centre.yaw)) + r.angle);
-  }
-  out.angle = std::min(out.angle, M_PI);
-  return out;
-}
-
 namespace {
 
 // match_window_unambiguous's decision for one region among its peaks, refined.
@@ -145,28 +134,17 @@ std::vector<WindowMatch3> match_regions_unambiguous(const OctreeMatchTarget& tar
   few.rejection = "too few points";
   std::vector<WindowMatch3> out(regions.size(), few);
   if (regions.empty() || target.icp.size() < 10 || window.cloud.size() < 10) return out;
-  const WideRegion all = covering_region(regions.front(), regions);
-  MatchingOptions grid = o;
-  grid.search_radius = all.radius;
-  grid.search_angle = all.angle;
-  const std::vector<std::vector<LevelCoarseResult>> peaks = level_search_peaks_within(
-      target.field, window.scored, all.centre, coarse_grid(grid), regions, wide.peaks, wide.separation, wide.angle_separation);
-  // Each distinct grid pose is refined once, from the covering square's centre (only tau and
-  // the weight depend on it, and unambiguous_in takes them again per region), as OpenMP tasks:
-  // inside SegSlam3d's update the other thread, done with its particles, takes some of them.
-  std::map<std::tuple<double, double, double>, WindowMatch3> refined;
-  for (const auto& region_peaks : peaks) {
-    for (const LevelCoarseResult& p : region_peaks) refined.try_emplace(std::make_tuple(p.pose.x, p.pose.y, p.pose.yaw));
+  const std::vector<std::vector<LevelCoarseResult>> peaks =
+      region_peaks(target, window, regions, o, wide.peaks, wide.separation, wide.angle_separation);
+  // Each distinct grid pose is refined once (only tau and the weight depend on the guess, and
+  // unambiguous_in takes them again per region).
+  std::vector<Pose4> seeds;
+  for (const auto& own : peaks) {
+    for (const LevelCoarseResult& p : own) seeds.push_back(p.pose);
   }
-  for (auto& [key, m] : refined) {
-    WindowMatch3* result = &m;
-    const Pose4 seed{std::get<0>(key), std::get<1>(key), all.centre.z, std::get<2>(key)};
-#pragma omp task default(shared) firstprivate(result, seed)
-    *result = refine_match(target, window, seed, all.centre, o, so);
-  }
-#pragma omp taskwait
+  const RefinedMatches refined = refine_each(target, window, seeds, o, so);
   const auto refine = [&](const Pose4& seed) -> const WindowMatch3& {
-    return refined.at(std::make_tuple(seed.x, seed.y, seed.yaw));
+    return refined.at(std::make_tuple(seed.x, seed.y, seed.z, seed.yaw));
   };
   for (std::size_t r = 0; r < regions.size(); ++r) out[r] = unambiguous_in(regions[r], peaks[r], refine, target, window, o, wide);
   return out;

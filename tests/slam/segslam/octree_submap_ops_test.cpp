@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "lookahead/slam/octree/ray_insertion.hpp"
@@ -80,6 +81,45 @@ TEST(OctreeSubmapOps, MatchingRecoversAKnownOffsetBetweenSubmapsOfOnePlace) {
   // A window of another place does not match this submap as well.
   const WindowMatch3 far = match_window(match_target_of(map_of(log, 0, 2), o), w, guess, o);
   EXPECT_TRUE(!far.ok || far.weight < m.weight);
+}
+
+// Several guesses searched together (the capped searches of one segment's copies): each
+// region's answer is match_window's from its own centre, when the centres lie on one lattice
+// of the coarse steps (0.6 m, 0.1 rad here), whatever the order of the regions.
+TEST(OctreeSubmapOps, RegionsSearchedTogetherAnswerAsEachAlone) {
+  const RangeLog3& log = garage_log();
+  const MatchingOptions o = segslam3d_defaults().matching;
+  const OctreeMatchTarget target = match_target_of(map_of(log, 5, 12), o);
+  const SweepWindow w = window_of(log, 8, 11);
+  const Pose4 truth = Pose4::level_of(*log.sweeps[8].truth);
+  const auto on_lattice = [&](double dx, double dy, double dyaw) {
+    const auto round_to = [](double v, double s) { return std::round(v / s) * s; };
+    return Pose4{round_to(truth.x + dx, 0.6), round_to(truth.y + dy, 0.6), truth.z, round_to(truth.yaw + dyaw, 0.1)};
+  };
+  std::vector<LevelSubgrid> regions = {{on_lattice(1.0, -0.6, 0.1), 2.0, 0.4},
+                                       {on_lattice(-0.7, 0.4, -0.2), 2.0, 0.4},
+                                       {on_lattice(6.0, 0.0, 0.0), 2.0, 0.4},  // off the truth's reach
+                                       {on_lattice(0.3, 1.2, 0.0), 3.0, 0.3}};
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::vector<WindowMatch3> together = match_regions(target, w, regions, o);
+    ASSERT_EQ(together.size(), regions.size());
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      MatchingOptions alone = o;
+      alone.search_radius = regions[r].radius, alone.search_angle = regions[r].angle;
+      const WindowMatch3 m = match_window(target, w, regions[r].centre, alone);
+      EXPECT_EQ(together[r].ok, m.ok) << pass << " " << r;
+      EXPECT_NEAR(together[r].pose.x, m.pose.x, 1e-6) << pass << " " << r;
+      EXPECT_NEAR(together[r].pose.y, m.pose.y, 1e-6) << pass << " " << r;
+      EXPECT_NEAR(together[r].pose.yaw, m.pose.yaw, 1e-6) << pass << " " << r;
+      EXPECT_NEAR(together[r].icp_error, m.icp_error, 1e-6) << pass << " " << r;
+      EXPECT_NEAR(together[r].weight, m.weight, 1e-6) << pass << " " << r;
+      EXPECT_EQ(together[r].coarse_score, m.coarse_score) << pass << " " << r;
+      EXPECT_EQ(together[r].guess_score, m.guess_score) << pass << " " << r;
+    }
+    // The right place, found from every side within reach.
+    if (pass == 0) EXPECT_TRUE(together[0].ok && together[1].ok && together[3].ok);
+    std::reverse(regions.begin(), regions.end());
+  }
 }
 
 // The cause of wrong re-entries on the garage loop: ICP started 4.2 m along the aisle (half a

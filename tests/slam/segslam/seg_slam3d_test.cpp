@@ -12,6 +12,7 @@
 #include "lookahead/slam/config/segslam_config.hpp"
 #include "lookahead/slam/segslam/octree_map_samples.hpp"
 #include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
+#include "garage_drive.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {
@@ -53,6 +54,31 @@ TEST(SegSlam3d, ShortGarageSegmentSegmentsAndStaysNearTheTruth) {
   EXPECT_EQ(sample.placed.size(), path.pieces.size());  // no loop: the sample is the chain
   EXPECT_GT(sample.map.known_voxels(), 1000U);
   EXPECT_GT(sample.entropy, 0.0);
+}
+
+// Driving the garage's first aisle back and forth (the later legs re-enter the first legs'
+// submaps), the particles' capped searches on one submap are searched together: fewer
+// searches than regions asked for, the re-entries found, the robot kept within 1 m.
+TEST(SegSlam3d, CappedSearchesOnOneSubmapAreSearchedTogether) {
+  SegSlam3dOptions o;
+  o.filter.particles = 8;
+  o.filter.threads = 2;
+  o.filter.seed = 3;
+  o.segslam.segmentation.min_segment_updates = 5;
+  o.segslam.segmentation.max_motion_error = 0.2;
+  o.segslam.matching.min_separation_s = 15;
+  SegSlam3d filter(o);
+  for (const RangeSweep& s : test_data::aisle_back_and_forth().sweeps) filter.add_sweep(s);
+  filter.finish();
+  const SegSlam3dStatistics& st = filter.statistics();
+  const std::size_t capped_regions = st.match_attempts - st.wide_attempts;
+  std::printf("%zu capped searches for %zu regions (%zu requests), %zu matches\n", st.capped_searches, capped_regions,
+              st.match_requests, st.matches);
+  EXPECT_GT(st.capped_searches, 0U);
+  EXPECT_LT(st.capped_searches, capped_regions);
+  EXPECT_GT(st.matches, 0U);
+  const Eigen::Vector3d truth = test_data::aisle_back_and_forth().sweeps.back().truth->translation();
+  EXPECT_LT((filter.estimate().position() - truth).norm(), 1.0);
 }
 
 TEST(SegSlam3d, RejectsImpossibleOptions) {

@@ -160,15 +160,15 @@ TEST(WideReentry, CoveringRegionHoldsEveryRegion) {
   const WideRegion first{{10.0, 5.0, 1.0, 0.2}, 12.0, 0.6};
   const WideRegion east{{14.0, 6.0, 1.0, 0.4}, 10.0, 0.5};   // 4 m off in x: edge 14 m, yaw 0.7 rad
   const WideRegion south{{9.0, -1.5, 1.0, 0.1}, 13.0, 0.8};  // 6.5 m off in y: edge 19.5 m, yaw 0.9 rad
-  const WideRegion one = covering_region(first, {first});
+  const WideRegion one = covering_subgrid(first, {first});
   EXPECT_DOUBLE_EQ(one.radius, 12.0);
   EXPECT_DOUBLE_EQ(one.angle, 0.6);
-  const WideRegion all = covering_region(first, {first, east, south});
+  const WideRegion all = covering_subgrid(first, {first, east, south});
   EXPECT_DOUBLE_EQ(all.centre.x, 10.0);
   EXPECT_DOUBLE_EQ(all.radius, 19.5);
   EXPECT_NEAR(all.angle, 0.9, 1e-12);
   // Across the +-pi seam the yaw offset is the short way round.
-  const WideRegion seam = covering_region({{0, 0, 0, 3.1}, 5.0, 0.3}, {{{0, 0, 0, -3.1}, 5.0, 0.3}});
+  const WideRegion seam = covering_subgrid({{0, 0, 0, 3.1}, 5.0, 0.3}, {{{0, 0, 0, -3.1}, 5.0, 0.3}});
   EXPECT_NEAR(seam.angle, 0.3 + (2 * M_PI - 6.2), 1e-12);
 }
 

@@ -61,6 +61,10 @@ struct LevelSubgrid {
   double angle = 0.0;
 };
 
+/// The part around `first` that holds every part of `parts` (first.centre, the largest offset
+/// plus reach in x or y, and in yaw up to pi): the grid several parts are searched on together.
+LevelSubgrid covering_subgrid(const LevelSubgrid& first, const std::vector<LevelSubgrid>& parts);
+
 /// level_search_peaks in each part of one grid, the parts sharing the scores and bounds they
 /// have in common (one part spanning the grid is level_search_peaks bit for bit). Why: the
 /// wide re-entry searches of several particles over one candidate (wide_reentry.hpp) cover

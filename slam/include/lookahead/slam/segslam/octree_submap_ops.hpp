@@ -12,6 +12,8 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -88,6 +90,30 @@ struct WindowMatch3 {
 /// fitted (`structure`): floor and ceiling fit a wrong re-entry as well as the right one.
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& guess,
                           const MatchingOptions& options, const StructureTestOptions& structure = {});
+/// Searching several regions of one candidate together (match_regions, and the wide stage's
+/// match_regions_unambiguous): up to `count` distinct coarse peaks of each region's own part
+/// of the grid covering them all (level_search_peaks_within on covering_subgrid(regions)).
+std::vector<std::vector<LevelCoarseResult>> region_peaks(const OctreeMatchTarget& target, const SweepWindow& window,
+                                                         const std::vector<LevelSubgrid>& regions,
+                                                         const MatchingOptions& options, std::size_t count,
+                                                         double separation, double angle_separation);
+/// refine_match from each distinct seed pose once, as OpenMP tasks (inside SegSlam3d's update
+/// the other thread, done with its particles, takes some), keyed by the seed's (x, y, z, yaw);
+/// tau and the weight are taken against the seed.
+using RefinedMatches = std::map<std::tuple<double, double, double, double>, WindowMatch3>;
+RefinedMatches refine_each(const OctreeMatchTarget& target, const SweepWindow& window, const std::vector<Pose4>& seeds,
+                           const MatchingOptions& options, const StructureTestOptions& structure);
+
+/// match_window for several guesses on one candidate, searched together: each region (centre
+/// = a guess, radius and angle = its search's reach) gets the best pose of its own part of
+/// the grid of the square covering them all (the regions share the block scores and bounds:
+/// level_search_peaks_within), its centre unless a grid pose scores more, as match_window;
+/// each distinct pose is refined by ICP once (as OpenMP tasks). With centres on one lattice
+/// of the coarse steps every region sees the grid poses it would see alone. tau and the
+/// weight are taken from the region's centre.
+std::vector<WindowMatch3> match_regions(const OctreeMatchTarget& target, const SweepWindow& window,
+                                        const std::vector<LevelSubgrid>& regions, const MatchingOptions& options,
+                                        const StructureTestOptions& structure = {});
 /// match_window's ICP from `seed` and its acceptance tests, without the coarse search (its
 /// scores are left 0); tau and the eq. 18 weight are taken against `guess`.
 WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& seed,

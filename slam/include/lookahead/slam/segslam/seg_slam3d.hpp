@@ -36,6 +36,7 @@
 
 #include "lookahead/slam/geometry/pose4.hpp"
 #include "lookahead/slam/rbpf3d/rbpf3d_options.hpp"
+#include "lookahead/slam/segslam/level_coarse_search.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/match_attempt3.hpp"
 #include "lookahead/slam/segslam/octree_submap_ops.hpp"
@@ -122,6 +123,9 @@ struct SegSlam3dStatistics {
   std::size_t segmentations = 0, matches = 0, match_attempts = 0, pruned = 0;
   std::size_t match_requests = 0;  ///< candidate matches asked for; match_attempts of them searched
   std::size_t wide_attempts = 0;   ///< of match_attempts, wide searches (wide_reentry.hpp)
+  /// Capped searches run (seg_slam3d_capped.cpp): each answers the distinct rounded guesses
+  /// on one submap at one update, which match_attempts counts one by one.
+  std::size_t capped_searches = 0;
   std::size_t locked = 0;          ///< re-entered submaps locked (localisation only, sec. 6)
   std::size_t locked_updates = 0;  ///< particle updates in a locked submap (no ray insertion)
   std::size_t merged = 0;          ///< closed re-entered submaps merged into their parent
@@ -187,15 +191,34 @@ class SegSlam3d {
   void update(std::size_t k);
   void run_pending(double lookahead_s);
   SweepWindow window_after(std::size_t sweep) const;
-  Transition predict_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng);
+  /// Eq. 13-14/17 and, when the particle matches at this update, its candidates (and a
+  /// confirmed pending re-entry); their capped searches run after, for all particles at once.
+  Transition ask_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng);
+  /// Eq. 3's draw among the matches offered, and the submap that follows.
+  void choose_submap(SegParticle3& p, Transition& t, const SweepWindow& w, std::mt19937_64& rng);
   void advance(SegParticle3& p, const SweepModel& model, std::mt19937_64& rng) const;
   struct Candidate;  // a submap of the particle's map sample left for matching
+  void ask_matches(SegParticle3& p, const SweepWindow& w, Transition& t, std::mt19937_64& rng);
+  /// The candidates' capped results (a screen that matched fitted again to the particle's
+  /// copy) and, where they found nothing, the wide request; into t's offers.
+  void collect_matches(SegParticle3& p, const SweepWindow& w, Transition& t);
+  /// One capped search for the requests on one submap (the segment's first copy) and height
+  /// cell: each guess's rounded region answered from a shared grid (match_regions).
+  struct CappedSearch {
+    std::size_t searched = 0;
+    MatchingOptions options;           ///< the searched submap's reach
+    std::vector<LevelSubgrid> regions;  ///< distinct rounded guesses
+    std::vector<WindowMatch3> results;  ///< per region
+  };
+  /// The capped searches the particles asked for, grouped, run as tasks, answers into screens.
+  void run_capped_stage(std::vector<Transition>& transitions, const SweepWindow& w);
+  void run_capped_search(CappedSearch& search, const SweepWindow& w);
+  /// A guess rounded to the capped searches' lattice (two coarse steps in x, y and yaw, 0.5 m
+  /// in height) with `reach`'s radius and angle: guesses in one cell share a search, and the
+  /// grids of regions searched together coincide.
+  [[nodiscard]] static LevelSubgrid capped_region(const Pose4& guess, const MatchingOptions& reach);
   std::vector<Candidate> winnow(const SegParticle3& p, std::size_t skip, std::vector<MatchAttempt3>& attempts,
                                 std::mt19937_64& rng) const;
-  std::vector<WindowMatch3> match_candidates(SegParticle3& p, const SweepWindow& w,
-                                             std::vector<std::size_t>& ids, std::vector<Pose4>& guesses,
-                                             std::vector<MatchAttempt3>& attempts, std::optional<WideRequest>& wide,
-                                             std::mt19937_64& rng);
   void record(MatchAttempt3& a, std::size_t candidate, const WindowMatch3& m, bool wide) const;
   /// requests[i]: particle i's, or null.
   [[nodiscard]] std::vector<WideSearch> wide_searches(const std::vector<const WideRequest*>& requests) const;
@@ -209,10 +232,15 @@ class SegSlam3d {
   [[nodiscard]] MatchAttempt3 attempt_of(std::size_t candidate, const Pose4& guess, double path_distance,
                                          double chain_error, const std::optional<MatchingOptions>& wide) const;
   MatchEvent3 offer_of(std::size_t candidate, const Pose4& guess, const WindowMatch3& m) const;
-  WindowMatch3 capped_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
+  /// A candidate's capped result from its screen (run_capped_stage).
+  WindowMatch3 capped_result(const Candidate& c, WindowMatch3 screen, const SweepWindow& w);
   WindowMatch3 cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w);
-  /// A capped search's cache key: candidate, guess cell (x, y, z, yaw).
+  /// A capped search's key: the submap searched and its region's centre (x, y, z, yaw).
   using MatchKey = std::tuple<std::size_t, long, long, long, long>;
+  [[nodiscard]] static MatchKey key_of(std::size_t candidate, const LevelSubgrid& region);
+  /// match_window (or the eq. 19 localisation filter) from the region's centre.
+  WindowMatch3 capped_search(std::size_t candidate, const LevelSubgrid& region, const MatchingOptions& o,
+                             const SweepWindow& w);
   [[nodiscard]] std::uint64_t localization_seed(const MatchKey& key) const;
   std::shared_ptr<const OctreeMatchTarget> target_of(std::size_t candidate);
   std::optional<WindowMatch3> confirm_pending(SegParticle3& p, const SweepWindow& w, std::vector<MatchAttempt3>& attempts);

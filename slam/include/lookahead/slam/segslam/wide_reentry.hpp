@@ -141,12 +141,8 @@ WindowMatch3 match_window_unambiguous(const OctreeMatchTarget& target, const Swe
 /// around `centre` (its guess, rounded).
 using WideRegion = LevelSubgrid;
 
-/// The square around `first` that holds every region (first.centre, the largest offset plus
-/// reach in x or y, and in yaw up to pi).
-WideRegion covering_region(const WideRegion& first, const std::vector<WideRegion>& regions);
-
 /// One wide search for several particles' regions of one candidate, on the grid of
-/// covering_region(regions): per region its own distinct coarse peaks (level_search_peaks_within:
+/// covering_subgrid(regions): per region its own distinct coarse peaks (level_search_peaks_within:
 /// the regions share the scores and bounds), each pose refined by ICP at most once, and
 /// match_window_unambiguous's answer among them (tau and the eq. 18 weight taken from the
 /// region's centre with `options`' sigma). With one region it is match_window_unambiguous
