@@ -6,16 +6,19 @@
 # against the world: the SLAM position error along the way and at the end, and the map's
 # precision and recall. Two runs at a time (both cores).
 # Usage (repository root, after building): bash bench/pslam/corridor_study.sh [SEEDS] [OUT]
+#   CONFIG=MISSION.yaml passes --config to both arms (e.g. config/mission/standard_proposal.yaml:
+#   the paper's RBPF, which samples the motion model instead of our scan-matching proposal).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 SEEDS=${1:-10}
 OUT=${2:-out/bench/pslam_corridor}
 export LA=${LOOKAHEAD:-./build/lookahead}  # a copy keeps a long study safe from rebuilds
+export CONFIG_ARGS=${CONFIG:+--config $CONFIG}
 mkdir -p "$OUT"
 for s in $(seq 1 "$SEEDS"); do
   echo "rbpf $s"
   echo "pslam $s --predict"
 done | xargs -P 2 -L 1 bash -c 'label=$0; seed=$1; shift 1; dir='"$OUT"'/$label-$seed;
-  [ -f "$dir/run.json" ] || "$LA" explore --world corridor --seed "$seed" --no-animation "$@" --out "$dir" > "$dir.log" 2>&1;
+  [ -f "$dir/run.json" ] || "$LA" explore $CONFIG_ARGS --world corridor --seed "$seed" --no-animation "$@" --out "$dir" > "$dir.log" 2>&1;
   echo "$label seed $seed done"'
 python3 bench/pslam/summarize_corridor.py "$OUT" | tee "$OUT/summary.md"
