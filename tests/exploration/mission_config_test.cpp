@@ -130,6 +130,18 @@ TEST(MissionConfig, ShippedDefaultsMatchTheCode) {
   EXPECT_NO_THROW(load_mission_options(path));
 }
 
+// config/mission/standard_proposal.yaml (P-SLAM reproduction 5 with the paper's RBPF) changes
+// only the scan matcher's hit ratio, to one no match reaches: every particle samples the motion
+// model. Everything else is the defaults.
+TEST(MissionConfig, StandardProposalFileOnlyTurnsTheScanMatchOff) {
+  const std::string path = std::string(LOOKAHEAD_SOURCE_DIR) + "/config/mission/standard_proposal.yaml";
+  const MissionOptions o = load_mission_options(path);
+  EXPECT_GT(o.slam.matcher.min_hit_ratio, 1.0);
+  MissionOptions expected = MissionOptions::defaults();
+  expected.slam.matcher.min_hit_ratio = o.slam.matcher.min_hit_ratio;
+  EXPECT_EQ(dump_mission_options(o), dump_mission_options(expected));
+}
+
 // config/robot/pioneer3dx.yaml is the default robot: loading it changes nothing.
 TEST(MissionConfig, PioneerRobotFileIsTheDefaultRobot) {
   const std::string path = std::string(LOOKAHEAD_SOURCE_DIR) + "/config/robot/pioneer3dx.yaml";
