@@ -34,6 +34,25 @@ inline const RangeLog3& aisle_back_and_forth() {
   return log;
 }
 
+/// SegSLAM 3D options for aisle_back_and_forth(): `particles` on both cores, filter seed 3,
+/// segments of at least 5 sweeps, candidates 15 s old (the legs are about 12 s long).
+inline SegSlam3dOptions aisle_options(int particles) {
+  SegSlam3dOptions o;
+  o.filter.particles = particles;
+  o.filter.threads = 2;
+  o.filter.seed = 3;
+  o.segslam.segmentation.min_segment_updates = 5;
+  o.segslam.segmentation.max_motion_error = 0.2;
+  o.segslam.matching.min_separation_s = 15;
+  return o;
+}
+
+/// Every sweep of `log` through `filter`, then the updates still waiting for their window.
+inline void run_filter(SegSlam3d& filter, const RangeLog3& log) {
+  for (const RangeSweep& s : log.sweeps) filter.add_sweep(s);
+  filter.finish();
+}
+
 /// A map of sweeps [first, last] inserted at their true poses, in the world frame.
 inline EvidenceOctree map_of(const RangeLog3& log, std::size_t first, std::size_t last) {
   EvidenceOctree map;

@@ -84,20 +84,10 @@ TEST(LocalizationMatch3, AnotherPlaceOrAPriorTooFarOffGivesNoMatch) {
 // first legs' submaps through the localisation filter's matches, and the robot stays
 // localised; the same seed with ICP matching takes other matches (the option is used).
 TEST(LocalizationMatch3, TheFilterReentersOldSubmapsThroughTheLocalisationFilter) {
-  SegSlam3dOptions o;
-  o.filter.particles = 4;
-  o.filter.threads = 2;
-  o.filter.seed = 3;
-  o.segslam.segmentation.min_segment_updates = 5;
-  o.segslam.segmentation.max_motion_error = 0.2;
-  o.segslam.matching.min_separation_s = 15;
+  SegSlam3dOptions o = test_data::aisle_options(4);
   o.segslam.matching.use_localization_filter = true;
-  const auto run = [](SegSlam3d& filter) {
-    for (const RangeSweep& s : aisle_back_and_forth().sweeps) filter.add_sweep(s);
-    filter.finish();
-  };
   SegSlam3d localised(o);
-  run(localised);
+  test_data::run_filter(localised, aisle_back_and_forth());
   const SegSlam3dStatistics& st = localised.statistics();
   std::printf("%zu matches of %zu offered, %zu searches\n", st.matches, st.match_offers.size(), st.match_attempts);
   EXPECT_GT(st.matches, 0U);
@@ -105,7 +95,7 @@ TEST(LocalizationMatch3, TheFilterReentersOldSubmapsThroughTheLocalisationFilter
   EXPECT_LT((localised.estimate().position() - truth).norm(), 1.0);
   o.segslam.matching.use_localization_filter = false;
   SegSlam3d icp(o);
-  run(icp);
+  test_data::run_filter(icp, aisle_back_and_forth());
   bool differ = icp.statistics().match_offers.size() != st.match_offers.size();
   for (std::size_t i = 0; !differ && i < st.match_offers.size(); ++i) {
     differ = icp.statistics().match_offers[i].weight != st.match_offers[i].weight;

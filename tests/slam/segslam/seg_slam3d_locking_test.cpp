@@ -107,13 +107,7 @@ TEST(SegSlam3dLocking, RejectsImpossibleLockingOptions) {
 }
 
 SegSlam3dOptions options_for_aisle(bool lock_and_merge) {
-  SegSlam3dOptions o;
-  o.filter.particles = 4;
-  o.filter.threads = 2;
-  o.filter.seed = 3;
-  o.segslam.segmentation.min_segment_updates = 5;
-  o.segslam.segmentation.max_motion_error = 0.2;
-  o.segslam.matching.min_separation_s = 15;
+  SegSlam3dOptions o = test_data::aisle_options(4);
   o.segslam.locking.lock = o.segslam.locking.merge = lock_and_merge;
   // Generous: the test is about what locking does, not about the thresholds.
   o.segslam.locking.lock_max_error = o.segslam.locking.merge_max_error = 0.2;
@@ -169,8 +163,7 @@ TEST(SegSlam3dLocking, LockedParticlesWriteNothingReentriesMergeAndMapsStopGrowi
   // Merging keeps the maps from growing with the legs driven: off, every stored submap keeps
   // a map (and nothing is locked or merged).
   SegSlam3d off(options_for_aisle(false));
-  for (const RangeSweep& s : aisle_back_and_forth().sweeps) off.add_sweep(s);
-  off.finish();
+  test_data::run_filter(off, aisle_back_and_forth());
   EXPECT_EQ(off.statistics().locked + off.statistics().merged + off.statistics().locked_updates, 0U);
   EXPECT_EQ(off.segmap().map_count(), off.segmap().live_count());
   EXPECT_LT(segmap.map_count(), off.segmap().map_count());

@@ -60,16 +60,8 @@ TEST(SegSlam3d, ShortGarageSegmentSegmentsAndStaysNearTheTruth) {
 // submaps), the particles' capped searches on one submap are searched together: fewer
 // searches than regions asked for, the re-entries found, the robot kept within 1 m.
 TEST(SegSlam3d, CappedSearchesOnOneSubmapAreSearchedTogether) {
-  SegSlam3dOptions o;
-  o.filter.particles = 8;
-  o.filter.threads = 2;
-  o.filter.seed = 3;
-  o.segslam.segmentation.min_segment_updates = 5;
-  o.segslam.segmentation.max_motion_error = 0.2;
-  o.segslam.matching.min_separation_s = 15;
-  SegSlam3d filter(o);
-  for (const RangeSweep& s : test_data::aisle_back_and_forth().sweeps) filter.add_sweep(s);
-  filter.finish();
+  SegSlam3d filter(test_data::aisle_options(8));
+  test_data::run_filter(filter, test_data::aisle_back_and_forth());
   const SegSlam3dStatistics& st = filter.statistics();
   const std::size_t capped_regions = st.match_attempts - st.wide_attempts;
   std::printf("%zu capped searches for %zu regions (%zu requests), %zu matches\n", st.capped_searches, capped_regions,
