@@ -204,6 +204,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   if (run.max_search_radius >= 0) options.extras.max_search_radius = run.max_search_radius;
   if (run.wide_reentry_radius >= 0) options.extras.wide.max_radius = run.wide_reentry_radius;
   if (run.wide_retry_updates >= 0) options.extras.wide.retry_updates = run.wide_retry_updates;
+  if (run.wide_max_particles >= 0) options.extras.wide.max_particles = static_cast<std::size_t>(run.wide_max_particles);
   if (run.search_per_particle) options.segslam.matching.share_by_segment = false;
   SegSlam3d filter(options);
   ProgressBar bar("segslam3d", log.sweeps.size());
@@ -250,7 +251,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
                        {"peaks", wide.peaks}, {"separation_m", wide.separation},
                        {"angle_separation_rad", wide.angle_separation},
                        {"confirm_distance_m", wide.confirm_distance}, {"confirm_angle_rad", wide.confirm_angle},
-                       {"retry_updates", wide.retry_updates}};
+                       {"retry_updates", wide.retry_updates}, {"max_particles", wide.max_particles}};
   j["map_entropy_nats_m3"] = best_map.best.entropy;
   j["sample_entropies"] = best_map.entropies;
   j["map_known_voxels"] = best_map.best.map.known_voxels();
