@@ -122,6 +122,8 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   j["log_duration_s"] = log.scans.empty() ? 0.0 : log.scans.back().timestamp - log.scans.front().timestamp;
   j["peak_memory_mb"] = peak_memory_mb();
   j["neff_history"] = st.neff;
+  const slam::Pose2 mean = filter.mean_pose();
+  j["final_estimate"] = {mean.x, mean.y, mean.theta};  // weighted mean, as SegSLAM's run.json
   j["map_entropy_nats"] = h.total;
   j["map_observed_cells"] = h.observed;
   j["parameters_yaml"] = slam::dump_rbpf_options(filter.options());

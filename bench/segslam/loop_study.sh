@@ -14,7 +14,9 @@
 # the same relative pose of the scans' corrected poses (bench/segslam/loop_error.py). RBPF:
 # the best particle's final pose (what `lookahead slam` writes); SegSLAM: the best particle's
 # reconstructed trajectory (eq. 11, loops closed by its matches), brought to the last scan
-# by dead reckoning. Run time: the filter's wall time from run.json, one thread each
+# by dead reckoning. Also the paper's own measure (Table II: the weighted mean of the particle
+# cloud, run.json `final_estimate`, both filters), the report's "mean-pose error" columns.
+# Run time: the filter's wall time from run.json, one thread each
 # (--threads 1), two runs at a time on a 2-core machine.
 #
 # Usage: bench/segslam/loop_study.sh [BUILD=build] [OUT=bench/results/segslam_loop]
@@ -59,10 +61,11 @@ run() {  # run METHOD N SEED
   [[ $1 == segslam-per-particle ]] && method=(--method segslam --segslam-config "$OUT/per_particle.yaml")
   "$BUILD/lookahead" slam "$OUT/intel-loop.log" "${method[@]}" --particles "$2" --seed "$3" --threads 1 \
     --config config/segslam/intel_loop_rbpf.yaml --map-samples 1 --out "$dir" > "$dir.log" 2>&1
-  local err time
+  local err time mean_err
   err=$(python3 bench/segslam/loop_error.py "$dir/trajectory.txt" "$OUT/intel-loop-truth.log")
+  mean_err=$(python3 bench/segslam/loop_error.py "$dir/trajectory.txt" "$OUT/intel-loop-truth.log" "$dir/run.json")
   time=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["wall_time_s"])' "$dir/run.json")
-  echo "$1 $2 $3 $err $time"
+  echo "$1 $2 $3 $err $time $mean_err"
 }
 export -f run
 export OUT BUILD
@@ -77,8 +80,11 @@ import statistics as st, sys, subprocess, collections, glob
 rows = [l.split() for f in sorted(glob.glob(sys.argv[1] + '/runs-*.txt')) for l in open(f) if l.strip()]
 by = collections.defaultdict(list)
 seed_time = collections.defaultdict(dict)
-for m, n, s, e, t in rows:
+mean_by = collections.defaultdict(list)
+for m, n, s, e, t, *mean in rows:  # runs of before the mean-pose column have 5 fields
     by[(m, int(n))].append((float(e), float(t)))
+    if mean:
+        mean_by[(m, int(n))].append(float(mean[0]))
     seed_time[(int(n), s)][m] = float(t)
 commit = subprocess.run(['git', 'rev-parse', '--short', 'HEAD'], capture_output=True, text=True).stdout.strip()
 cpu = [l.split(':')[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')][0]
@@ -87,9 +93,10 @@ print()
 methods = [m for m in ('rbpf', 'segslam', 'segslam-per-particle', 'segslam-locking') if any(k[0] == m for k in by)]
 others = [m for m in methods if m != 'rbpf'] if 'rbpf' in methods else []
 print("| particles | runs | " + " | ".join(f"{m} error m (mean / std)" for m in methods) + " | "
+      + " | ".join(f"{m} mean-pose error m (mean / std)" for m in methods) + " | "
       + " | ".join(f"{m} time s (median)" for m in methods) + " | "
       + " | ".join(f"{m} / rbpf time (median of per-seed ratios)" for m in others) + " |")
-print("|---|---|" + "---|" * (2 * len(methods) + len(others)))
+print("|---|---|" + "---|" * (3 * len(methods) + len(others)))
 def ratio(m, n):
     r = [d[m] / d['rbpf'] for (k, _), d in seed_time.items() if k == n and m in d and 'rbpf' in d]
     return f"{st.median(r):.2f}" if r else "-"
@@ -98,6 +105,7 @@ med = lambda v: f"{st.median(v):.1f}" if v else "-"
 for n in sorted({k[1] for k in by}):
     cells = [by.get((m, n), []) for m in methods]
     print(f"| {n} | {len(cells[0])} | " + " | ".join(f([e for e, _ in c]) for c in cells) + " | "
+          + " | ".join(f(mean_by.get((m, n), [])) for m in methods) + " | "
           + " | ".join(med([t for _, t in c]) for c in cells) + " | "
           + " | ".join(ratio(m, n) for m in others) + " |")
 PY

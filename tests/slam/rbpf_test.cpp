@@ -60,6 +60,38 @@ TEST(Rbpf, CorrectsDriftingOdometry) {
   EXPECT_GT(filter.statistics().updates, 50u);
 }
 
+// The weighted mean pose (the SegSLAM paper's Table II measure) lies among the particles:
+// its position within their bounding box, its heading within their spread; with one particle
+// it is that particle's pose, as current_pose() gives it.
+TEST(Rbpf, MeanPoseLiesAmongTheParticles) {
+  const auto data = drive();
+  RbpfOptions single = small(1);
+  single.particles = 1;
+  Rbpf filter(small(1)), one(single);
+  // Half the drive, up to a scan that updated the filter (nothing to move by odometry then).
+  bool updated = false;
+  for (std::size_t i = 0; i < data.size() && !(updated && i > data.size() / 2); ++i) {
+    updated = filter.add_scan(data[i].second);
+    one.add_scan(data[i].second);
+  }
+  ASSERT_TRUE(updated);
+  const Pose2 mean = filter.mean_pose();
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9, spread = 0;
+  for (const Particle& p : filter.particles()) {
+    x0 = std::min(x0, p.pose.x), x1 = std::max(x1, p.pose.x), y0 = std::min(y0, p.pose.y), y1 = std::max(y1, p.pose.y);
+    spread = std::max(spread, std::abs(normalize_angle(p.pose.theta - mean.theta)));
+  }
+  EXPECT_GT(x1 - x0, 0.0);  // the particles differ, so the bounds mean something
+  EXPECT_GE(mean.x, x0);
+  EXPECT_LE(mean.x, x1);
+  EXPECT_GE(mean.y, y0);
+  EXPECT_LE(mean.y, y1);
+  EXPECT_LT(spread, 0.2);
+  EXPECT_NEAR(one.mean_pose().x, one.current_pose().x, 1e-9);
+  EXPECT_NEAR(one.mean_pose().y, one.current_pose().y, 1e-9);
+  EXPECT_NEAR(normalize_angle(one.mean_pose().theta - one.current_pose().theta), 0.0, 1e-9);
+}
+
 TEST(Rbpf, SameSeedSameResultWhateverTheThreadCount) {
   const auto data = drive();
   Rbpf one(small(1)), two(small(2));

@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "lookahead/slam/grid/scan_inserter.hpp"
@@ -173,6 +174,19 @@ std::size_t Rbpf::best_particle() const {
 Pose2 Rbpf::current_pose() const {
   if (particles_.empty()) return {};
   return particles_[best_particle()].pose.compose(last_update_odometry_.between(odometry_.back()));
+}
+
+Pose2 Rbpf::mean_pose() const {
+  if (particles_.empty()) return {};
+  std::vector<double> logw;
+  for (const Particle& p : particles_) logw.push_back(p.log_weight);
+  const std::vector<double> w = normalized_weights(logw);
+  double x = 0, y = 0, c = 0, s = 0;
+  for (std::size_t m = 0; m < particles_.size(); ++m) {
+    const Pose2& q = particles_[m].pose;
+    x += w[m] * q.x, y += w[m] * q.y, c += w[m] * std::cos(q.theta), s += w[m] * std::sin(q.theta);
+  }
+  return Pose2{x, y, std::atan2(s, c)}.compose(last_update_odometry_.between(odometry_.back()));
 }
 
 std::vector<Pose2> Rbpf::best_trajectory() const {

@@ -56,6 +56,10 @@ class Rbpf {
   /// The best particle's estimate of the pose at the latest scan (its last updated pose
   /// moved by the odometry since): what a robot in the loop plans from.
   [[nodiscard]] Pose2 current_pose() const;
+  /// The weighted mean of the particles' poses (circular mean of the headings), moved by the
+  /// odometry since the last update: the "final particle filter pose" of the SegSLAM paper's
+  /// Table II (Fairfield et al. 2010), which SegSlam::estimate() gives for SegSLAM.
+  [[nodiscard]] Pose2 mean_pose() const;
   [[nodiscard]] const std::vector<double>& timestamps() const { return timestamps_; }
   [[nodiscard]] const std::vector<Pose2>& odometry() const { return odometry_; }
   [[nodiscard]] const RbpfStatistics& statistics() const { return stats_; }
