@@ -139,6 +139,21 @@ TEST_F(Slam3dCli, NegativeWideRetryUpdatesIsRejectedWithItsValue) {
   EXPECT_FALSE(fs::exists(dir / "run.json"));
 }
 
+TEST_F(Slam3dCli, WideReentryMaxParticlesReachesRunJsonAndRejectsNegatives) {
+  const Result bad = run("garage --method segslam --max-sweeps 3 --wide-reentry-max-particles -2 --out " + dir.string(),
+                         dir / "log.txt");
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.output.find("--wide-reentry-max-particles"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("-2"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir / "run.json"));
+  const Result r = run("garage --method segslam --max-sweeps 3 --particles 2 --wide-reentry-max-particles 40 --out " +
+                           dir.string(),
+                       dir / "log.txt");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "run.json"));
+  EXPECT_EQ(j["wide_reentry"]["max_particles"].get<int>(), 40);
+}
+
 TEST_F(Slam3dCli, UnknownInputIsAnError) {
   const Result r = run("/nonexistent/place --out " + dir.string(), dir / "log.txt");
   EXPECT_NE(r.code, 0);
