@@ -258,7 +258,7 @@ Run add_slam3d_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--wide-reentry-max-particles", args->wide_max_particles,
                  "--method segslam: the wide re-entry stage runs only in filters of at most this many particles "
-                 "(default 10; 0: at any count)")
+                 "(default 0: at any count; e.g. 10 saves 8-14 % from 20 particles up and may lose a loop, README)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--search-per-particle", args->search_per_particle,
                "--method segslam: every particle searches its own copy of a candidate segment (default: the "
