@@ -37,6 +37,15 @@ class Slam3dCli : public ::testing::Test {
     fs::create_directories(dir);
   }
   void TearDown() override { fs::remove_all(dir); }
+  /// A SegSLAM run with `flag value` fails, names the flag and the value, and writes no run.json.
+  void expect_segslam_rejects(const std::string& flag, const std::string& value) {
+    const Result r = run("garage --method segslam --max-sweeps 3 " + flag + " " + value + " --out " + dir.string(),
+                         dir / "log.txt");
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.output.find(flag), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(value), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "run.json"));
+  }
   fs::path dir;
 };
 
@@ -122,30 +131,15 @@ TEST_F(Slam3dCli, SegslamConfigErrorsNameTheKey) {
 }
 
 TEST_F(Slam3dCli, NegativeWideReentryRadiusIsRejectedWithItsValue) {
-  const Result r = run("garage --method segslam --max-sweeps 3 --wide-reentry-radius -3 --out " + dir.string(),
-                       dir / "log.txt");
-  EXPECT_NE(r.code, 0);
-  EXPECT_NE(r.output.find("--wide-reentry-radius"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("-3"), std::string::npos) << r.output;
-  EXPECT_FALSE(fs::exists(dir / "run.json"));
+  expect_segslam_rejects("--wide-reentry-radius", "-3");
 }
 
 TEST_F(Slam3dCli, NegativeWideRetryUpdatesIsRejectedWithItsValue) {
-  const Result r = run("garage --method segslam --max-sweeps 3 --wide-retry-updates -4 --out " + dir.string(),
-                       dir / "log.txt");
-  EXPECT_NE(r.code, 0);
-  EXPECT_NE(r.output.find("--wide-retry-updates"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("-4"), std::string::npos) << r.output;
-  EXPECT_FALSE(fs::exists(dir / "run.json"));
+  expect_segslam_rejects("--wide-retry-updates", "-4");
 }
 
 TEST_F(Slam3dCli, WideReentryMaxParticlesReachesRunJsonAndRejectsNegatives) {
-  const Result bad = run("garage --method segslam --max-sweeps 3 --wide-reentry-max-particles -2 --out " + dir.string(),
-                         dir / "log.txt");
-  EXPECT_NE(bad.code, 0);
-  EXPECT_NE(bad.output.find("--wide-reentry-max-particles"), std::string::npos) << bad.output;
-  EXPECT_NE(bad.output.find("-2"), std::string::npos) << bad.output;
-  EXPECT_FALSE(fs::exists(dir / "run.json"));
+  expect_segslam_rejects("--wide-reentry-max-particles", "-2");
   const Result r = run("garage --method segslam --max-sweeps 3 --particles 2 --wide-reentry-max-particles 40 --out " +
                            dir.string(),
                        dir / "log.txt");
