@@ -37,7 +37,7 @@ void write_hypothesis_pictures(const LookaheadMapping& lookahead, const World& w
   for (const HypothesisSnapshot& s : lookahead.snapshots()) {
     const PredictionRecord& r = lookahead.records()[s.record];
     const predictor::Prediction& p = s.prediction;
-    const auto walls = true_walls(world, r.x, r.y, o.surroundings_diameter / 2);
+    const auto walls = true_walls(world, r.x, r.y, (p.diameter > 0 ? p.diameter : o.surroundings_diameter) / 2);
     const std::string name = fmt::format("{:03d}", n++);
     predictor::write_prediction_picture(dir + "/" + name + ".png", s.map, p, o, {walls});
     // The map it was made on: `lookahead predict DIR/NNN.yaml --target X,Y` repeats it.

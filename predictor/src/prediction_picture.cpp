@@ -42,7 +42,7 @@ std::vector<slam::PicturePoints> predicted_cell_overlays(const slam::OccupancyGr
 void write_prediction_picture(const std::string& png_path, const slam::OccupancyGrid& map,
                               const Prediction& p, const PredictorOptions& o,
                               const std::vector<slam::PicturePoints>& extra) {
-  const double r = o.surroundings_diameter / 2;
+  const double r = (p.diameter > 0 ? p.diameter : o.surroundings_diameter) / 2;  // the scale that was registered last
   std::vector<slam::PicturePath> paths{circle(p.target_x, p.target_y, r, {230, 120, 0}, "target region S_f")};
   std::vector<slam::PicturePoints> points = extra;  // under the hypothesis
   if (p.hypothesis) {

@@ -17,6 +17,8 @@ void validate(const PredictorOptions& o) {
   if (o.min_reference_distance < 0) fail("min_reference_distance >= 0");
   if (o.min_predicted_area < 0) fail("min_predicted_area >= 0");
   if (!(o.max_conflict_share >= 0 && o.max_conflict_share <= 1)) fail("max_conflict_share in [0, 1]");
+  if (!(o.large_surroundings_diameter >= 0)) fail("large_surroundings_diameter >= 0");
+  if (!(o.large_max_conflict_share >= 0 && o.large_max_conflict_share <= 1)) fail("large_max_conflict_share in [0, 1]");
 }
 
 }  // namespace lookahead::predictor

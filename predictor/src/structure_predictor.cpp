@@ -63,36 +63,53 @@ Prediction predict_structure(const slam::OccupancyGrid& map, double tx, double t
   return p;
 }
 
+namespace {
+
+// One registration of the surroundings of diameter o.surroundings_diameter (sec. III).
+Prediction predict_at_scale(const slam::OccupancyGrid& map, const ExploredMapModel& model, double tx, double ty,
+                            const PredictorOptions& o) {
+  Prediction p;
+  p.target_x = tx;
+  p.target_y = ty;
+  p.diameter = o.surroundings_diameter;
+  p.features = model.features;
+  const std::optional<Corner> control = control_point(p.features.corners, tx, ty, o.control_point_range);
+  if (!control) return p;
+  const RegionSamples region = disc_samples(tx, ty, o.surroundings_diameter, o.similarity_resolution);
+  const Registration reg = register_region(model.coarse, region, *control, p.features.corners, o);
+  p.alignment = reg.best;
+  p.candidates = reg.candidates;
+  p.status = Prediction::Status::kNoMatch;
+  if (!reg.best || reg.best->score.psi < o.similarity_threshold) return p;
+  auto h = make_hypothesis(map, tx, ty, o.surroundings_diameter, reg.best->reference_to_target);
+  h->similarity = reg.best->score.psi;
+  slam::CellIndex lo, hi;
+  std::size_t cells = 0;
+  if (h->grid.known_bounds(lo, hi)) {
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) cells += h->grid.is_known({x, y});
+  }
+  p.predicted_area = static_cast<double>(cells) * cell_area(map);
+  if (p.predicted_area >= o.min_predicted_area) {
+    p.hypothesis = std::move(h);
+    p.status = Prediction::Status::kPredicted;
+  }
+  return p;
+}
+
+}  // namespace
+
 Prediction predict_structure(const slam::OccupancyGrid& map, const ExploredMapModel& model, double tx, double ty,
                              const PredictorOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   Prediction p;
-  p.target_x = tx;
-  p.target_y = ty;
-  p.features = model.features;
-  const std::optional<Corner> control = control_point(p.features.corners, tx, ty, o.control_point_range);
-  if (control) {
-    const RegionSamples region = disc_samples(tx, ty, o.surroundings_diameter, o.similarity_resolution);
-    const Registration reg = register_region(model.coarse, region, *control, p.features.corners, o);
-    p.alignment = reg.best;
-    p.candidates = reg.candidates;
-    p.status = Prediction::Status::kNoMatch;
-    if (reg.best && reg.best->score.psi >= o.similarity_threshold) {
-      auto h = make_hypothesis(map, tx, ty, o.surroundings_diameter, reg.best->reference_to_target);
-      h->similarity = reg.best->score.psi;
-      slam::CellIndex lo, hi;
-      std::size_t cells = 0;
-      if (h->grid.known_bounds(lo, hi)) {
-        for (int y = lo.y; y <= hi.y; ++y)
-          for (int x = lo.x; x <= hi.x; ++x) cells += h->grid.is_known({x, y});
-      }
-      p.predicted_area = static_cast<double>(cells) * cell_area(map);
-      if (p.predicted_area >= o.min_predicted_area) {
-        p.hypothesis = std::move(h);
-        p.status = Prediction::Status::kPredicted;
-      }
-    }
+  if (o.large_surroundings_diameter > 0) {
+    PredictorOptions large = o;
+    large.surroundings_diameter = o.large_surroundings_diameter;
+    large.max_conflict_share = o.large_max_conflict_share;
+    p = predict_at_scale(map, model, tx, ty, large);
   }
+  if (p.status != Prediction::Status::kPredicted) p = predict_at_scale(map, model, tx, ty, o);
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return p;
 }

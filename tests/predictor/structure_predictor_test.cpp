@@ -88,6 +88,38 @@ TEST(StructurePredictor, ARandomWallPatternFindsNoMatchAboveThreshold) {
   EXPECT_EQ(p.status, Prediction::Status::kNoMatch);
 }
 
+TEST(StructurePredictor, LargeSurroundingsFirstAndTheIssuesDiameterWhenTheyMatchNothing) {
+  const slam::OccupancyGrid map = test::maze_grid(12.0);
+  PredictorOptions o;
+  const Prediction small = predict_structure(map, 12.0, kPeriod + 1.1, o);
+  ASSERT_EQ(small.status, Prediction::Status::kPredicted);
+  EXPECT_DOUBLE_EQ(small.diameter, 10.0);
+  // The large surroundings match on the periodic maze and predict further.
+  o.large_surroundings_diameter = 14.0;
+  const Prediction large = predict_structure(map, 12.0, kPeriod + 1.1, o);
+  ASSERT_EQ(large.status, Prediction::Status::kPredicted);
+  EXPECT_DOUBLE_EQ(large.diameter, 14.0);
+  EXPECT_GT(large.predicted_area, small.predicted_area + 5.0);
+  EXPECT_GT(cell_accuracy(*large.hypothesis), 0.9);
+  // An 18 m maze explored to x = 10 m: the 14 m surroundings of (10, 6.8) match no other
+  // corner's above the threshold (found by trying maze sizes), the issue's 10 m do.
+  const slam::OccupancyGrid small_maze = test::maze_grid(10.0, 18.0);
+  PredictorOptions large_only;
+  large_only.surroundings_diameter = 14.0;
+  large_only.max_conflict_share = o.large_max_conflict_share;
+  ASSERT_EQ(predict_structure(small_maze, 10.0, kPeriod + 1.1, large_only).status, Prediction::Status::kNoMatch);
+  const Prediction fallback = predict_structure(small_maze, 10.0, kPeriod + 1.1, o);
+  ASSERT_EQ(fallback.status, Prediction::Status::kPredicted);
+  EXPECT_DOUBLE_EQ(fallback.diameter, 10.0);
+  PredictorOptions issue = o;
+  issue.large_surroundings_diameter = 0.0;
+  const Prediction alone = predict_structure(small_maze, 10.0, kPeriod + 1.1, issue);
+  EXPECT_DOUBLE_EQ(fallback.predicted_area, alone.predicted_area);
+  EXPECT_DOUBLE_EQ(fallback.alignment->score.psi, alone.alignment->score.psi);
+  o.large_surroundings_diameter = -1.0;
+  EXPECT_THROW(predict_structure(map, 12.0, kPeriod + 1.1, o), std::invalid_argument);
+}
+
 TEST(StructurePredictor, ThresholdOutsideThePapersRangeIsRejected) {
   PredictorOptions o;
   o.similarity_threshold = 0.9;

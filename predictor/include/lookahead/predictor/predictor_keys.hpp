@@ -19,6 +19,8 @@ void visit_predictor_keys(PredictorOptions& o, V&& v) {
   v("min_reference_distance", o.min_reference_distance, "reference corners at least this far from P1 [m]");
   v("min_predicted_area", o.min_predicted_area, "a hypothesis predicts at least [m^2]");
   v("max_conflict_share", o.max_conflict_share, "alignments with more walls on known free cells are rejected");
+  v("large_surroundings_diameter", o.large_surroundings_diameter, "> 0: try surroundings this wide first [m]");
+  v("large_max_conflict_share", o.large_max_conflict_share, "... with at most this conflict share");
 }
 
 }  // namespace lookahead::predictor

@@ -26,6 +26,7 @@ struct Prediction {
   std::optional<Alignment> alignment;       ///< best one found, also when below threshold
   int candidates = 0;                       ///< transforms scored
   double predicted_area = 0.0;              ///< cells in the hypothesis [m^2]
+  double diameter = 0.0;                    ///< of the surroundings registered last [m]
   double seconds = 0.0;                     ///< wall time of the whole prediction
   MapFeatures features;                     ///< of the explored map (for pictures)
   std::shared_ptr<const slam::HypothesisMap> hypothesis;  ///< set when kPredicted
