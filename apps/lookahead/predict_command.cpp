@@ -52,7 +52,7 @@ slam::ProbabilityMap load_map(const std::string& path) {
 nlohmann::json to_json(const predictor::Prediction& p) {
   nlohmann::json j{{"status", predictor::to_string(p.status)}, {"target", {p.target_x, p.target_y}},
                    {"transforms_scored", p.candidates}, {"predicted_area_m2", p.predicted_area},
-                   {"seconds", p.seconds}, {"corners", p.features.corners.size()},
+                   {"seconds", p.seconds}, {"diameter_m", p.diameter}, {"corners", p.features.corners.size()},
                    {"lines", p.features.lines.size()}};
   if (p.alignment) {
     const auto& a = *p.alignment;

@@ -10,6 +10,10 @@
 # JOBS=2 runs two missions at a time; STRATEGY=predictive-utility runs the rules on that
 # strategy instead of predictive, in folders named RULE@predictive-utility; SEEDS="6 7 8 9 10"
 # runs other seeds than 1-5, into the same folders.)
+# A rule file changes only what it names in the mission defaults. Since session 18 the defaults
+# are the maze's rule (fallback_d14_boundary_slivers; region5_d10 writes out the defaults
+# before): a file written before then names only what differed from those, so its figures
+# come back at the commit the README names for them, or with region5_d10's keys added.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 bin=${LOOKAHEAD:-./build/lookahead}

@@ -29,7 +29,7 @@ void LookaheadMapping::start_next(double now) {
   if (options_.pictures) pending_map_ = queued_map_;  // copy-on-write: shares the tiles
   pending_ = true;
   due_ = now + options_.latency;
-  pending_record_ = PredictionRecord{now, x, y, "", 0.0, 0.0, 0.0, {}, std::nullopt};
+  pending_record_ = PredictionRecord{now, x, y, "", 0.0, 0.0, 0.0, 0.0, {}, std::nullopt};
 }
 
 std::shared_ptr<const slam::HypothesisMap> LookaheadMapping::deliver(double now) {
@@ -46,6 +46,7 @@ std::shared_ptr<const slam::HypothesisMap> LookaheadMapping::deliver(double now)
   r.status = predictor::to_string(p->status);
   r.psi = p->alignment ? p->alignment->score.psi : 0.0;
   r.area = p->predicted_area;
+  r.diameter = p->diameter;
   r.seconds = p->seconds;
   r.alignment = p->alignment;
   if (!p->hypothesis)

@@ -153,6 +153,10 @@ GoalDistance Mission::prediction_order(const std::vector<FrontierCluster>& clust
 SkipRule Mission::skip_rule() const {
   SkipRule rule = options_.lookahead.skip_rule();
   rule.free = options_.free_threshold;  // undecided cells, for wall slivers: as the frontier detector reads them
+  // A wall gap closes a region because the robot cannot pass it (the maze: 0.5 m, the Pioneer's
+  // diameter); an opening the robot fits through is a way on. The KTH setup's 0.2 m robot
+  // passes 0.4 m doors, and a 0.5 m gap closed them into wall slivers (README, P-SLAM 3).
+  rule.wall_gap = std::min(rule.wall_gap, 2 * options_.robot.radius);
   if (options_.lookahead.known_boundary) {
     // The simulator's world is the building: its extent is the boundary the paper's Fig. 7(d)
     // assumes known (for the maze, the outside of its outer wall).

@@ -71,7 +71,7 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
   v("skip_predicted_targets", o.skip_predicted_targets, "... or when its goal got a hypothesis itself");
   v("skip_region_radius", o.skip_region_radius, "> 0: ... instead when its region within this is predicted [m]");
   v("neighbours_last", o.neighbours_last, "... and choose frontiers whose region is partly predicted last");
-  v("skip_region_wall_gap", o.skip_region_wall_gap, "... a wall's unknown gaps up to this wide close the region [m]");
+  v("skip_region_wall_gap", o.skip_region_wall_gap, "... a wall's unknown gaps up to this wide (and the robot's diameter) close the region [m]");
   v("known_boundary", o.known_boundary, "... and no region reaches beyond the world's extent (Fig. 7(d))");
   v("skip_wall_slivers", o.skip_wall_slivers, "... and skip frontiers whose region is a closed pocket of min_predicted_area");
   v("targets_per_selection", o.targets_per_selection, "frontiers predicted per selection: the target, then the nearest");

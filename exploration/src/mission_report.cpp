@@ -53,6 +53,7 @@ nlohmann::json hypotheses_json(const std::vector<PredictionRecord>& records) {
                      {"target", {r.x, r.y}},
                      {"psi", r.psi},
                      {"area_m2", r.area},
+                     {"diameter_m", r.diameter},
                      {"psi_world", r.truth.psi},
                      {"psi_solid_world", r.truth.psi_solid_world},
                      {"cells", r.truth.cells},

@@ -195,7 +195,7 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(e.value(), "lots");
   EXPECT_EQ(parse_error("lookahead:\n  similarity_threshold: 0.95\n").file(), "my.yaml");  // outside 0.4..0.7
   EXPECT_EQ(parse_error("lookahead:\n  targets_per_selection: 0\n").file(), "my.yaml");
-  // The maze's opt-in skip rules.
+  // The maze's skip rules (the mission defaults since the maze rule became the default).
   e = parse_error("lookahead:\n  predict_while_idle: sometimes\n");
   EXPECT_EQ(e.line(), 2u);
   EXPECT_EQ(e.field(), "lookahead.predict_while_idle");
@@ -205,10 +205,11 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_wall_gap: -0.5\n").file(), "my.yaml");
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  neighbours_last: true\n").file(), "my.yaml");  // needs a region
   EXPECT_EQ(parse_error("lookahead:\n  known_boundary: yes please\n").field(), "lookahead.known_boundary");
-  EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  known_boundary: true\n").file(), "my.yaml");  // needs a region
+  // The defaults keep the boundary and the slivers on; the share rule has no regions and ignores them.
+  EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip_region_radius: 0\n  known_boundary: true\n", "x"));
   EXPECT_EQ(parse_error("lookahead:\n  skip_wall_slivers: maybe\n").value(), "maybe");
   // Slivers are regions of the region rule: without a region there are none.
-  EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  skip_wall_slivers: true\n").file(), "my.yaml");
+  EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip_region_radius: 0\n  skip_wall_slivers: true\n", "x"));
   EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip_region_radius: 5\n  skip_wall_slivers: true\n", "x"));
   e = parse_error("slam:\n  prediction:\n    hit_ratio_threshold: high\n");
   EXPECT_EQ(e.line(), 3u);

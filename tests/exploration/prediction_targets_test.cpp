@@ -127,6 +127,7 @@ TEST(PredictionTargets, AMissionPredictingWhileIdleMakesMoreRequests) {
   o.pose_source = PoseSource::kTruth;
   o.strategy = "predictive";
   o.time_limit = 120;
+  o.lookahead.predict_while_idle = false;  // on by default
   o.harmonize();
   Mission plain(maze.world, maze.start, o);
   plain.run();

@@ -50,7 +50,8 @@ struct LookaheadOptions {
   /// With skip_region_radius: the environment's outer boundary is known, as in P-SLAM's
   /// Fig. 7(d) ("assuming that the environmental boundary is known"): the region of a
   /// frontier by the outer wall does not leak beyond it, where nothing can be predicted.
-  /// The mission takes the boundary from the world's extent.
+  /// The mission takes the boundary from the world's extent (on in MissionOptions::defaults();
+  /// turn it off for a world whose extent is not the building's outline).
   bool known_boundary = false;
   /// With skip_region_radius: also skip wall slivers, frontiers whose unexplored region is a
   /// closed pocket of at most min_predicted_area that no prediction touches
@@ -66,7 +67,7 @@ struct LookaheadOptions {
   /// other frontier goals (the paper's extension "predict several possible targets",
   /// sec. II-A). They queue on the worker, one delivered per latency period.
   int targets_per_selection = 4;
-  /// Opt-in: while the predictor has nothing queued, predict the nearest frontier goals that
+  /// While the predictor has nothing queued (off here, on in MissionOptions::defaults()), predict the nearest frontier goals that
   /// the look-ahead map does not cover yet (targets_per_selection at a time), a goal again
   /// only `repredict_after` seconds after its last try (the map around it grows meanwhile).
   /// The paper predicts "the next possible exploration goal" (sec. II-A); every frontier is
@@ -90,6 +91,7 @@ struct PredictionRecord {
   std::string status;           ///< predictor::to_string(Prediction::Status)
   double psi = 0.0;             ///< best Psi of the registration (0 without a control point)
   double area = 0.0;            ///< predicted area [m^2]
+  double diameter = 0.0;        ///< of the surroundings registered last (large or d) [m]
   double seconds = 0.0;         ///< wall time of the prediction
   HypothesisCheck truth;        ///< of the hypothesis against the world (when predicted)
   std::optional<predictor::Alignment> alignment;  ///< the best registration, when one was scored
