@@ -18,8 +18,7 @@ namespace {
 // - a frontier is left out when its region within 7 m (d/2 of the large surroundings),
 //   closed by walls, wall gaps up to 0.5 m and at most the robot's diameter (no way through;
 //   Mission::skip_rule) and the world's extent (Fig. 7(d) assumes the boundary known), is
-//   predicted or a closed pocket of at most 1 m^2 (a wall sliver; not the remnant of a stale
-//   frontier, RegionArea::stale_frontier);
+//   predicted or a closed pocket of at most 1 m^2 (a wall sliver);
 // - an idle predictor predicts the nearest frontiers not covered yet.
 void look_ahead_as_on_the_maze(LookaheadOptions& l) {
   l.predictor.large_surroundings_diameter = 14.0;

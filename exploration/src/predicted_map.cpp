@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/predicted_map.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deque>
@@ -164,19 +163,9 @@ RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const Front
     predicted += known;
     for (const slam::CellIndex n : neighbours(c)) push(n);
   }
-  // A stale frontier: most of its cells no longer border anything unexplored (its far side was
-  // seen since the frontiers were last found, but for a few undecided cells). Those remnants
-  // make a region of a few cells that is no wall sliver: kth_0510035738 with a 12 m laser
-  // ended `done` at 17 s, 12 % explored, every frontier taken for one (README, P-SLAM 1).
-  std::size_t bordering = 0;
-  for (const slam::CellIndex c : cluster.cells) {
-    const auto n = neighbours(c);
-    bordering += std::any_of(n.begin(), n.end(), [&](slam::CellIndex m) { return unexplored(m) && !wall(m); });
-  }
-  const bool stale = 2 * bordering < cluster.cells.size();
   const double cell = map.resolution() * map.resolution();
   return {static_cast<double>(predicted) * cell, static_cast<double>(unpredicted) * cell, closed_by_prediction,
-          closed_by_gap, gap_of_prediction, stale};
+          closed_by_gap, gap_of_prediction};
 }
 
 double PredictedMap::confidence(slam::CellIndex c) const {

@@ -295,34 +295,6 @@ TEST(PredictedMap, AnUndecidedBandBeforeAWallIsASliver) {
   EXPECT_FALSE(left_out(none.region_area(open, cluster, rule), rule));
 }
 
-// A stale frontier: its far side was seen since the frontiers were found, free but for two
-// undecided cells. Those two cells are its whole region, a pocket of 0.005 m^2, but no wall
-// sliver: most of the frontier's cells border nothing unexplored any more (kth_0510035738,
-// 12 m laser: every frontier was taken for a sliver and the mission ended at 12 % explored).
-TEST(PredictedMap, AStaleFrontierIsNoSliver) {
-  slam::OccupancyGrid map;
-  FrontierCluster cluster;
-  for (int y = -30; y <= 50; ++y) {
-    for (int x = -1; x <= 6; ++x) map.add_log_odds({x, y}, -1000);
-    if (y >= 0 && y < 20) cluster.cells.push_back({0, y});
-  }
-  map.add_log_odds({1, 5}, 1100);  // -1000 + 1100: undecided, probability 0.52
-  map.add_log_odds({1, 6}, 1100);
-  cluster.has_goal = true;
-  cluster.goal_y = 0.5;
-  const PredictedMap none;
-  const SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.3, std::nullopt, true, 0.35};
-  const RegionArea a = none.region_area(map, cluster, rule);
-  EXPECT_NEAR(a.unpredicted, 0.005, 1e-9);
-  EXPECT_TRUE(a.stale_frontier);
-  EXPECT_FALSE(a.wall_sliver(rule.region_tolerance));
-  EXPECT_FALSE(left_out(a, rule));
-  for (int y = 0; y < 20; ++y) map.add_log_odds({1, y}, 1100);  // the whole band undecided: a sliver again
-  const RegionArea band = none.region_area(map, cluster, rule);
-  EXPECT_FALSE(band.stale_frontier);
-  EXPECT_TRUE(left_out(band, rule));
-}
-
 TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
   const PredictionAwareStrategy s(make_strategy("nearest"), 0.9);
   FrontierCluster a, b, c;

@@ -89,6 +89,9 @@ class Mission {
   [[nodiscard]] const slam::Rbpf* slam() const { return rbpf_.get(); }
   /// The look-ahead mapping (predictions), null when it is off.
   [[nodiscard]] const LookaheadMapping* lookahead() const { return lookahead_.get(); }
+  /// The look-ahead skip rule: the options' rule with the world's extent as the known boundary
+  /// when asked, and wall gaps no wider than the robot.
+  [[nodiscard]] SkipRule skip_rule() const;
 
  private:
   void sense();
@@ -97,8 +100,6 @@ class Mission {
   void predict_while_idle();  ///< LookaheadOptions::predict_while_idle
   /// Which frontier goals are nearest for the prediction targets (LookaheadOptions::targets_by_path).
   [[nodiscard]] GoalDistance prediction_order(const std::vector<FrontierCluster>& clusters) const;
-  /// The look-ahead skip rule, with the world's extent as the known boundary when asked.
-  [[nodiscard]] SkipRule skip_rule() const;
   void refresh();
   void decide();
   bool need_new_path();

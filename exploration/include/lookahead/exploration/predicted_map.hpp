@@ -53,9 +53,6 @@ struct RegionArea {
   bool closed_by_gap = false;
   /// ... in a gap that only a predicted wall closes (counted with SkipRule::skip_wall_slivers).
   bool gap_of_prediction = false;
-  /// Fewer than half of the frontier's cells still border an unexplored cell: its far side was
-  /// seen since the frontiers were found, and what is left of the region is no wall sliver.
-  bool stale_frontier = false;
   /// Something of it is predicted: a predicted part or a predicted wall closing it. An
   /// empty region (the far side already seen) is not left out by any prediction.
   [[nodiscard]] bool touched_by_prediction() const { return predicted > 0 || closed_by_prediction; }
@@ -68,7 +65,7 @@ struct RegionArea {
   /// Not the empty region of a stale frontier, whose far side was seen since (nothing
   /// unexplored at all).
   [[nodiscard]] bool wall_sliver(double tolerance) const {
-    return !touched_by_prediction() && !gap_of_prediction && !stale_frontier && unpredicted <= tolerance &&
+    return !touched_by_prediction() && !gap_of_prediction && unpredicted <= tolerance &&
            (unpredicted > 0 || closed_by_gap);
   }
   /// Part of it is predicted, more than `tolerance` of it is not [m^2].
