@@ -109,7 +109,10 @@ Prediction predict_structure(const slam::OccupancyGrid& map, const ExploredMapMo
     large.max_conflict_share = o.large_max_conflict_share;
     p = predict_at_scale(map, model, tx, ty, large);
   }
-  if (p.status != Prediction::Status::kPredicted) p = predict_at_scale(map, model, tx, ty, o);
+  // Without a control point the d has none either (the same range, the same corners).
+  if (o.large_surroundings_diameter <= 0 || p.status == Prediction::Status::kNoMatch) {
+    p = predict_at_scale(map, model, tx, ty, o);
+  }
   p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return p;
 }

@@ -205,6 +205,12 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_wall_gap: -0.5\n").file(), "my.yaml");
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  neighbours_last: true\n").file(), "my.yaml");  // needs a region
   EXPECT_EQ(parse_error("lookahead:\n  known_boundary: yes please\n").field(), "lookahead.known_boundary");
+  e = parse_error("lookahead:\n  large_surroundings_diameter: wide\n");
+  EXPECT_EQ(e.line(), 2u);
+  EXPECT_EQ(e.field(), "lookahead.large_surroundings_diameter");
+  EXPECT_EQ(e.value(), "wide");
+  EXPECT_EQ(parse_error("lookahead:\n  large_surroundings_diameter: -14\n").file(), "my.yaml");  // out of range
+  EXPECT_EQ(parse_error("lookahead:\n  large_max_conflict_share: 2\n").file(), "my.yaml");
   // The defaults keep the boundary and the slivers on; the share rule has no regions and ignores them.
   EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip_region_radius: 0\n  known_boundary: true\n", "x"));
   EXPECT_EQ(parse_error("lookahead:\n  skip_wall_slivers: maybe\n").value(), "maybe");
