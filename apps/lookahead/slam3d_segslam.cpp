@@ -201,7 +201,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   }
   // SPDLOG_LEVEL=debug: every candidate considered is logged and kept in run.json.
   options.extras.record_attempts = spdlog::should_log(spdlog::level::debug);
-  if (run.max_search_radius >= 0) options.extras.max_search_radius = run.max_search_radius;
+  if (run.max_search_radius >= 0) options.segslam.matching.max_search_radius = run.max_search_radius;
   if (run.wide_reentry_radius >= 0) options.extras.wide.max_radius = run.wide_reentry_radius;
   if (run.wide_retry_updates >= 0) options.extras.wide.retry_updates = run.wide_retry_updates;
   if (run.wide_max_particles >= 0) options.extras.wide.max_particles = static_cast<std::size_t>(run.wide_max_particles);
@@ -242,7 +242,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   j["wall_time_s"] = wall;
   j["offline_search_s"] = search_s;
   j["map_samples"] = samples;
-  j["max_search_radius"] = options.extras.max_search_radius;
+  j["max_search_radius"] = options.segslam.matching.max_search_radius;
   j["share_by_segment"] = options.segslam.matching.share_by_segment;
   const auto& wide = options.extras.wide;
   j["wide_reentry"] = {{"max_radius_m", wide.max_radius}, {"sigmas", wide.sigmas}, {"trigger_sigmas", wide.trigger_sigmas},

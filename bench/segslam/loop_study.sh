@@ -22,9 +22,10 @@
 # Usage: bench/segslam/loop_study.sh [BUILD=build] [OUT=bench/results/segslam_loop]
 #   env: RUNS (default 20), FIRST_SEED (default 1; seeds FIRST_SEED..RUNS, so a study can be
 #   continued in the same OUT), PARTICLES (default "1 5 10 20 40 100"), JOBS (default 2),
-#   METHODS (default "rbpf segslam"; "segslam-locking" is SegSLAM with
-#   config/segslam/locking.yaml: locking and merging on; "segslam-per-particle" is SegSLAM
-#   with matching.share_by_segment off: every particle searches its own copy). The report covers every
+#   METHODS (default "rbpf segslam"; SegSLAM with config/segslam/standard_proposal.yaml;
+#   "segslam-locking" adds config/segslam/locking.yaml: locking and merging on;
+#   "segslam-per-particle" adds matching.share_by_segment off: every particle searches its own
+#   copy). The report covers every
 #   runs-*.txt in OUT.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -57,7 +58,8 @@ PY
 
 run() {  # run METHOD N SEED
   local dir=$OUT/runs/$1-$2-$3 method=(--method "$1")
-  [[ $1 == segslam-locking ]] && method=(--method segslam --segslam-config config/segslam/locking.yaml)
+  [[ $1 == segslam ]] && method=(--method segslam --segslam-config config/segslam/standard_proposal.yaml)
+  [[ $1 == segslam-locking ]] && method=(--method segslam --segslam-config "$OUT/locking.yaml")
   [[ $1 == segslam-per-particle ]] && method=(--method segslam --segslam-config "$OUT/per_particle.yaml")
   "$BUILD/lookahead" slam "$OUT/intel-loop.log" "${method[@]}" --particles "$2" --seed "$3" --threads 1 \
     --config config/segslam/intel_loop_rbpf.yaml --map-samples 1 --out "$dir" > "$dir.log" 2>&1
@@ -70,8 +72,12 @@ run() {  # run METHOD N SEED
 export -f run
 export OUT BUILD
 mkdir -p "$OUT/runs"
-# segslam-per-particle: every particle searches its own copy of a segment (no screening).
-printf 'matching:\n  share_by_segment: false\n' > "$OUT/per_particle.yaml"
+# SegSLAM runs the paper's segmentation here, as the particle step is the paper's
+# (config/segslam/standard_proposal.yaml; the 2D defaults are set for the scan-matching
+# proposal). segslam-per-particle: every particle searches its own copy of a segment (no
+# screening); segslam-locking: locking and merging on (config/segslam/locking.yaml).
+{ cat config/segslam/standard_proposal.yaml; printf '  share_by_segment: false\n'; } > "$OUT/per_particle.yaml"
+{ cat config/segslam/standard_proposal.yaml; grep -v '^#' config/segslam/locking.yaml; } > "$OUT/locking.yaml"
 for n in $PARTICLES; do for s in $(seq "$FIRST_SEED" "$RUNS"); do for m in $METHODS; do echo "$m $n $s"; done; done; done |
   xargs -P "$JOBS" -L 1 bash -c 'run "$@"' _ | tee "$OUT/runs-$FIRST_SEED.txt"
 

@@ -34,6 +34,7 @@ void visit_sections(SegSlamOptions& o, V&& v) {
   v("bin_size", m.bin_size, "ICP point bins [m]");
   v("search_radius", m.search_radius, "coarse search before ICP, translation [m]");
   v("search_angle", m.search_angle, "coarse search before ICP, rotation [rad]");
+  v("max_search_radius", m.max_search_radius, "the search widens with the loop's error up to this [m]");
   v("icp_iterations", m.icp_iterations, "ICP iterations");
   v("icp_max_distance", m.icp_max_distance, "ICP outlier distance [m]");
   v("icp_sigma", m.icp_sigma, "eq. 18 sigma of the ICP error [m]");

@@ -79,7 +79,8 @@ CoarseResult coarse_search_exhaustive(const NearField& field, const Points2& poi
 CoarseResult coarse_search_branch_and_bound(const NearField& field, const Points2& points, const Pose2& centre,
                                             const PoseGrid& grid) {
   const std::size_t top = branch_and_bound_dilations(grid, field.resolution()).size();
-  if (field.levels() != top + 1) {
+  // A field built for a wider grid serves a narrower one: level l is the block of 2^l steps.
+  if (field.levels() < top + 1) {
     throw std::invalid_argument("coarse_search_branch_and_bound: the near field has " + std::to_string(field.levels()) +
                                 " levels, the pose grid needs " + std::to_string(top + 1));
   }

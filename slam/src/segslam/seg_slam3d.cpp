@@ -41,6 +41,10 @@ SegSlamOptions segslam3d_defaults() {
   // (logged match offers, README): the coarse search must reach that far.
   o.matching.search_angle = 0.4;
   o.offline.map_samples = 5;
+  // The paper's segmentation (the 2D defaults changed for the scan-matching proposal): the
+  // garage's sweeps weigh by ray casting, and its studies ran with these.
+  o.segmentation.max_motion_error = 1.0;
+  o.segmentation.predictive_threshold = 0.5;
   return o;
 }
 
@@ -71,9 +75,9 @@ SegSlam3d::SegSlam3d(const SegSlam3dOptions& options)
   options_.filter.validate();
   validate(options_.segslam);
   const SegSlam3dExtras& e = options_.extras;
-  if (e.warmup_updates < 0 || !(e.proximity_height > 0) || e.window_points < 10 || !(e.max_search_radius >= 0)) {
+  if (e.warmup_updates < 0 || !(e.proximity_height > 0) || e.window_points < 10) {
     throw std::invalid_argument(
-        "segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10, max_search_radius >= 0");
+        "segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10");
   }
   validate(e.wide);
   if (!(e.structure.min_inlier_ratio >= 0 && e.structure.min_inlier_ratio <= 1) ||

@@ -32,7 +32,7 @@ void SegSlam3d::run_capped_stage(std::vector<Transition>& transitions, const Swe
   std::map<std::pair<std::size_t, long>, std::vector<std::size_t>> open;  // -> indices into searches
   // A request joins a search whose square, with its region, stays within this (a guess far
   // from the others would make the square, and its cost, grow).
-  const double max_square = 2 * std::max(options_.extras.max_search_radius, options_.segslam.matching.search_radius);
+  const double max_square = 2 * std::max(options_.segslam.matching.max_search_radius, options_.segslam.matching.search_radius);
   for (std::size_t u = 0; u < transitions.size(); ++u) {
     for (std::size_t k = 0; k < transitions[u].candidates.size(); ++k) {
       const Candidate& c = transitions[u].candidates[k];

@@ -244,7 +244,7 @@ MatchingOptions SegSlam3d::candidate_options(std::size_t candidate) const {
   // will be uncertain"). With a fixed 1.5 m sigma, right re-entries after the garage loop
   // (3-5 m from the map sample's guess) weighed nothing; with a fixed +-2 m search and 4 m
   // radius they were not reached at all (seed 6, README).
-  return candidate_reach(options_.segslam.matching, error_since(candidate), options_.extras.max_search_radius);
+  return candidate_reach(options_.segslam.matching, error_since(candidate), options_.segslam.matching.max_search_radius);
 }
 
 std::shared_ptr<const OctreeMatchTarget> SegSlam3d::target_of(std::size_t candidate) {
@@ -303,7 +303,7 @@ std::optional<MatchingOptions> SegSlam3d::wide_options(double chain_error) const
   // sigma_tau, accepted only when one pose of it passes the tests (eq. 19's covariance term).
   const std::size_t most = options_.extras.wide.max_particles;
   if (most > 0 && particles_.size() > most) return std::nullopt;
-  return wide_reach(options_.segslam.matching, chain_error, options_.extras.max_search_radius, options_.extras.wide);
+  return wide_reach(options_.segslam.matching, chain_error, options_.segslam.matching.max_search_radius, options_.extras.wide);
 }
 
 std::vector<double> SegSlam3d::chain_errors(const std::vector<PlacedSubmap<Pose4>>& sample,

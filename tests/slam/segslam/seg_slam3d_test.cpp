@@ -83,7 +83,7 @@ TEST(SegSlam3d, WideStageRunsOnlyInFiltersOfAtMostMaxParticles) {
   };
   const auto run = [](std::size_t max_particles, double max_radius) {
     SegSlam3dOptions o = test_data::aisle_options(3);
-    o.extras.max_search_radius = 0;
+    o.segslam.matching.max_search_radius = 0;
     o.extras.wide.max_radius = max_radius;
     o.extras.wide.max_particles = max_particles;
     SegSlam3d filter(o);

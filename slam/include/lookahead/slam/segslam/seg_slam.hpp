@@ -106,10 +106,14 @@ class SegSlam {
   void resample_if_needed();
 
   /// cached_match, screened on the first copy of the candidate's segment (share_by_segment).
-  WindowMatch screened_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w);
+  WindowMatch screened_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w,
+                             const MatchingOptions& reach);
   /// Matches of this update by (candidate, guess rounded to 1 m / 0.1 rad): resampled
   /// particles share their history and ask for the same match.
-  WindowMatch cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w);
+  WindowMatch cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w,
+                           const MatchingOptions& reach);
+  /// Eq. 13-14 error accumulated since the robot left the candidate [m] (candidate_reach.hpp).
+  [[nodiscard]] double error_since(std::size_t candidate) const;
   std::uint64_t localization_seed(const std::tuple<std::size_t, long, long, long>& key) const;
 
   RbpfOptions rbpf_;
@@ -123,6 +127,7 @@ class SegSlam {
   std::vector<LaserScan> scans_;
   std::size_t next_pending_ = 0;  ///< the oldest scan not yet considered for an update
   std::size_t last_update_ = 0;   ///< the scan of the last filter update
+  std::vector<double> motion_error_sum_{0.0};  ///< eq. 13-14 error accumulated up to each scan [m]
   std::mt19937_64 rng_;
   SegSlamStatistics stats_;
   std::mutex cache_mutex_;

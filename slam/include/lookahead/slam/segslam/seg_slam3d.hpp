@@ -63,9 +63,6 @@ struct SegSlam3dExtras {
   int window_points = 300;
   /// What a match's walls, columns and cars must show (structure_fit.hpp).
   StructureTestOptions structure;
-  /// The coarse search's reach widens with the eq. 13-14 error since a candidate was left,
-  /// up to this [m] (candidate_reach.hpp). >= 0; 0 keeps matching.search_radius.
-  double max_search_radius = 6.0;
   /// The wide, unambiguous re-entry search beyond that cap (wide_reentry.hpp).
   WideReentryOptions wide;
   /// Keep every candidate considered, with its outcome, in the statistics (debug log).
