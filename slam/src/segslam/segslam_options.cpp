@@ -28,7 +28,8 @@ void validate(const SegSlamOptions& o) {
   require(m.min_separation_s >= 0 && m.proximity_radius > 0, "matching.min_separation_s >= 0, proximity_radius > 0");
   require(m.max_candidates >= 1, "matching.max_candidates >= 1");
   require(m.bin_size > 0, "matching.bin_size > 0");
-  require(m.search_radius >= 0 && m.search_angle >= 0 && m.max_search_radius >= 0, "matching.search_* >= 0");
+  require(m.search_radius >= 0 && m.search_angle >= 0, "matching.search_* >= 0");
+  require(m.max_search_radius >= 0, "matching.max_search_radius >= 0");
   require(m.icp_iterations >= 1 && m.icp_max_distance > 0, "matching.icp_iterations >= 1, icp_max_distance > 0");
   require(m.icp_sigma > 0 && m.translation_sigma > 0 && m.null_error >= 0, "matching sigmas > 0, null_error >= 0");
   require(m.min_inlier_ratio >= 0 && m.min_inlier_ratio <= 1, "matching.min_inlier_ratio in 0..1");

@@ -10,6 +10,7 @@
 
 #include "../test_world.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/segslam/candidate_reach.hpp"
 #include "lookahead/slam/segslam/min_entropy_search.hpp"
 #include "lookahead/slam/sensor/likelihood_field_model.hpp"
 
@@ -131,6 +132,58 @@ TEST(SegSlam, SameSeedSameResultWhateverTheThreadCount) {
 
 namespace lookahead::slam::segslam {
 namespace {
+
+// The room mapped along y = 1, and a window of four scans seen from `truth` onwards.
+OccupancyGrid room_corridor_map() {
+  const auto world = test::room_world();
+  OccupancyGrid map;
+  for (double x = 1.5; x < 8.5; x += 0.5) insert_scan(map, {x, 1.0, 0}, test::simulate_scan(world, {x, 1.0, 0}, {}), {});
+  return map;
+}
+
+LookaheadWindow window_from(const Pose2& truth) {
+  const auto world = test::room_world();
+  LookaheadWindow w;
+  Points2 points;
+  for (int k = 0; k < 4; ++k) {
+    const Pose2 rel{0.3 * k, 0, 0};
+    const LaserScan s = test::simulate_scan(world, truth.compose(rel), {});
+    w.scans.push_back(prepare_scan(s, LikelihoodOptions{}));
+    w.relative_poses.push_back(rel);
+    for (std::size_t b = 0; b < s.ranges.size(); ++b) {
+      if (!std::isfinite(s.ranges[b])) continue;
+      const Pose2 end = rel.compose({s.ranges[b] * std::cos(s.bearing(b)), s.ranges[b] * std::sin(s.bearing(b)), 0});
+      points.emplace_back(end.x, end.y);
+    }
+  }
+  w.cloud = bin_points(points, 0.1);
+  return w;
+}
+
+// The 2D filter's candidate reach (candidate_reach.hpp): a guess 4.5 m off is beyond the fixed
+// 2 m search, within the reach widened by 5 m of eq. 13-14 error; one match target, built for
+// the widest reach (as SegSlam builds it), serves both searches.
+TEST(SegSlam, TheWidenedReachFindsAGuessBeyondTheFixedSearch) {
+  const OccupancyGrid map = room_corridor_map();
+  const Pose2 truth{2.5, 1.0, 0.0};
+  const LookaheadWindow w = window_from(truth);
+  const LikelihoodFieldModel likelihood(LikelihoodOptions{}, map);
+  MatchingOptions fixed;
+  fixed.icp_iterations = 3;  // the coarse search decides: ICP alone slides far along this room's walls
+  MatchingOptions widest = fixed;
+  widest.search_radius = fixed.max_search_radius;
+  const GridMatchTarget target = match_target_of(map, widest, likelihood);
+  const Pose2 guess{7.0, 1.3, 0.05};
+  const auto at_truth = [&](const WindowMatch& m) {
+    return m.ok && std::hypot(m.pose.x - truth.x, m.pose.y - truth.y) < 0.1 && std::abs(m.pose.theta) < 0.05;
+  };
+  EXPECT_FALSE(at_truth(match_window(map, target, w, guess, fixed)));
+  const MatchingOptions reach = candidate_reach(fixed, 5.0, fixed.max_search_radius);
+  ASSERT_GT(reach.search_radius, 4.6);
+  const WindowMatch wide = match_window(map, target, w, guess, reach);
+  EXPECT_TRUE(at_truth(wide)) << wide.pose.x << " " << wide.pose.y << " " << wide.pose.theta;
+  EXPECT_GT(wide.weight, 0.0);  // eq. 18's sigma_tau widened with the reach
+}
 
 // Sec. 4.5: both matchers bring a window seen from a known pose back onto the map from a
 // guess 0.4 m and 0.1 rad off.

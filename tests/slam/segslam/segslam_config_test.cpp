@@ -58,6 +58,15 @@ TEST(SegSlamConfig, ErrorsNameFileLineKeyAndValue) {
     EXPECT_EQ(e.value(), "soon");
   }
   EXPECT_THROW(parse_segslam_options("segmentation:\n  lookahead_s: -1\n", "s.yaml"), ParseError);
+  try {
+    parse_segslam_options("matching:\n  search_radius: 2\n  max_search_radius: -3\n", "s.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "s.yaml");
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "matching.max_search_radius");
+    EXPECT_EQ(e.value(), "-3");
+  }
   EXPECT_THROW(parse_segslam_options("filter:\n  particles: 3\n", "s.yaml"), ParseError);
 }
 

@@ -46,6 +46,7 @@ TEST(SubmapChoice, MatchWeightPrefersSmallErrorAndSmallTransforms) {
 // segment size holds every criterion back; a predictive-score drop segments.
 TEST(Segmentation, CriterionOnConstructedMotionErrors) {
   SegmentationOptions o;
+  o.predictive_threshold = 0.5;  // the paper's particle step (standard_proposal.yaml); off in the 2D defaults
   const double straight = motion_error_increment({0.5, 0, 0}, o);
   const double turn = motion_error_increment({0.1, 0, 1.2}, o);
   EXPECT_GT(turn, straight);
@@ -61,6 +62,8 @@ TEST(Segmentation, CriterionOnConstructedMotionErrors) {
   EXPECT_FALSE(should_segment(o.min_segment_updates - 1, 10 * o.max_motion_error, 0.0, o));
   EXPECT_TRUE(should_segment(o.min_segment_updates, 0.0, o.predictive_threshold / 2, o));
   EXPECT_FALSE(should_segment(o.min_segment_updates, 0.0, (1 + o.predictive_threshold) / 2, o));
+  o.predictive_threshold = 0.0;  // eq. 17 off: no score segments
+  EXPECT_FALSE(should_segment(o.min_segment_updates, 0.0, 0.0, o));
 }
 
 }  // namespace
