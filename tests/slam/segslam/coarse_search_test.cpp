@@ -74,9 +74,14 @@ TEST(NearField, DilatedLevelsAreTheBoxTest) {
 
 // The branch and bound returns exactly the exhaustive search's pose and score (including
 // which of equal scores), from guesses scattered around the true pose.
-void expect_same_optimum(const OccupancyGrid& map, const Points2& points, std::mt19937_64& rng, int trials) {
-  const PoseGrid grid{2.0, 0.24, 0.25, 0.05};
-  const NearField field(map, GridTile::kFar - 1, branch_and_bound_dilations(grid, map.resolution()));
+// `field_radius`: the field is built for a grid that wide (the 2D filter builds one per
+// candidate for its widest reach and searches narrower grids on it).
+void expect_same_optimum(const OccupancyGrid& map, const Points2& points, std::mt19937_64& rng, int trials,
+                         double search_radius = 2.0, double field_radius = 2.0) {
+  const PoseGrid grid{search_radius, 0.24, 0.25, 0.05};
+  const PoseGrid field_grid{field_radius, grid.step, grid.angle, grid.angle_step};
+  const NearField field(map, GridTile::kFar - 1, branch_and_bound_dilations(field_grid, map.resolution()));
+  ASSERT_GE(field.levels(), branch_and_bound_dilations(grid, map.resolution()).size() + 1);
   std::uniform_real_distribution<double> off(-1.5, 1.5), turn(-0.3, 0.3);
   for (int t = 0; t < trials; ++t) {
     const Pose2 guess{4.0 + off(rng), 1.0 + off(rng), turn(rng)};
@@ -92,6 +97,15 @@ void expect_same_optimum(const OccupancyGrid& map, const Points2& points, std::m
 TEST(CoarseSearch, BranchAndBoundFindsTheExhaustiveOptimumOnTheRoom) {
   std::mt19937_64 rng(11);
   expect_same_optimum(room_map(), scan_points({4.0, 1.0, 0.0}, 3), rng, 60);
+}
+
+TEST(CoarseSearch, AFieldBuiltForAWiderGridGivesTheSameOptimum) {
+  std::mt19937_64 rng(13);
+  const OccupancyGrid map = room_map();
+  const double narrow = 0.3;  // a grid of 3 x 3 translations needs fewer levels than a 6 m one
+  ASSERT_LT(branch_and_bound_dilations({narrow, 0.24, 0.25, 0.05}, map.resolution()).size(),
+            branch_and_bound_dilations({6.0, 0.24, 0.25, 0.05}, map.resolution()).size());
+  expect_same_optimum(map, scan_points({4.0, 1.0, 0.0}, 3), rng, 40, narrow, 6.0);
 }
 
 TEST(CoarseSearch, BranchAndBoundBreaksTiesAsTheExhaustiveSearch) {
