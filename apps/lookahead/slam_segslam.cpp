@@ -102,8 +102,9 @@ int run_segslam(const SegSlamArgs& a) {
   write_trajectory_files(a, log, filter);
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.scans) odometry.push_back(s.odometry);
+  // The paths of the submaps the map was pasted from, so the picture's path and walls agree.
   slam::segslam::write_segment_picture(a.out + "/map.png", best.best.map, odometry,
-                                       filter.segmented_trajectory(filter.best_particle()),
+                                       slam::segslam::sample_paths(filter, best.best),
                                        std::filesystem::path(log.path).filename().string() + " - SegSLAM, min-entropy map");
   const slam::Pose2 final_pose = filter.estimate();
   nlohmann::json j = statistics_json(filter);

@@ -3,6 +3,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <limits>
 
 #include "lookahead/slam/eval/map_entropy.hpp"
@@ -42,6 +43,28 @@ MapSample sample_full_map(const SegSlam& filter, std::size_t particle, std::mt19
   s.map = canvas.to_probability_map();
   s.entropy = scaled_entropy(s.map);
   return s;
+}
+
+SegmentedPath sample_paths(const SegSlam& filter, const MapSample& sample) {
+  const GridSubmap& start = filter.particles().at(sample.particle).submap;
+  std::vector<std::pair<const GridSubmap*, Pose2>> placed;
+  for (std::size_t i = 0; i < sample.placed.size(); ++i) {
+    placed.push_back({i == 0 ? &start : &filter.segmap().at(sample.placed[i].id), sample.placed[i].frame});
+  }
+  std::sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) {
+    return a.first->interval.first_scan < b.first->interval.first_scan;
+  });
+  SegmentedPath out;
+  for (const auto& [submap, frame] : placed) {
+    std::vector<Pose2> piece;
+    for (const auto& [scan, pose] : submap->path) piece.push_back(frame.compose(pose));
+    out.pieces.push_back(std::move(piece));
+    if (submap->parent != kNoSubmap) {
+      const Pose2 at = frame.compose(submap->entry);
+      out.matches.emplace_back(at.x, at.y);
+    }
+  }
+  return out;
 }
 
 MinEntropyResult min_entropy_search(const SegSlam& filter, int samples, std::uint64_t seed, int threads) {

@@ -380,22 +380,6 @@ std::vector<std::pair<std::size_t, Pose2>> SegSlam::trajectory(std::size_t m) co
   return reconstruct_trajectory(chain, chain_frames_with_matches(segmap_, chain));
 }
 
-SegmentedPath SegSlam::segmented_trajectory(std::size_t m) const {
-  const auto chain = temporal_chain(segmap_, particles_.at(m).submap);
-  const auto frames = chain_frames_with_matches(segmap_, chain);
-  SegmentedPath out;
-  for (std::size_t i = 0; i < chain.size(); ++i) {
-    std::vector<Pose2> piece;
-    for (const auto& [scan, pose] : chain[i]->path) piece.push_back(frames[i].compose(pose));
-    out.pieces.push_back(std::move(piece));
-    if (chain[i]->parent != kNoSubmap) {
-      const Pose2 at = frames[i].compose(chain[i]->entry);
-      out.matches.emplace_back(at.x, at.y);
-    }
-  }
-  return out;
-}
-
 std::vector<Pose2> SegSlam::trajectory_at_every_scan(std::size_t m) const {
   const auto updates = trajectory(m);
   std::vector<Pose2> out(scans_.size());

@@ -62,6 +62,24 @@ TEST(SegSlam, SegmentsMatchesAndClosesTheLoop) {
   EXPECT_EQ(filter.trajectory_at_every_scan(0).size(), data.size());
   const MinEntropyResult r = min_entropy_search(filter, 4, 1, 1);
   for (double h : r.entropies) EXPECT_LE(r.best.entropy, h);
+  // The picture's path is the sample's: every placed submap's own path, in its sample frame,
+  // in time order, and an X per placed re-entry.
+  const SegmentedPath paths = sample_paths(filter, r.best);
+  ASSERT_EQ(paths.pieces.size(), r.best.placed.size());
+  std::size_t reentries = 0, poses = 0;
+  for (std::size_t i = 0; i < r.best.placed.size(); ++i) {
+    const GridSubmap& m = i == 0 ? filter.particles().at(r.best.particle).submap : filter.segmap().at(r.best.placed[i].id);
+    reentries += m.parent != kNoSubmap ? 1 : 0;
+    poses += m.path.size();
+  }
+  EXPECT_EQ(paths.matches.size(), reentries);
+  std::size_t drawn = 0;
+  for (const auto& piece : paths.pieces) drawn += piece.size();
+  EXPECT_EQ(drawn, poses);
+  const Pose2 start = r.best.placed[0].frame.compose(filter.particles().at(r.best.particle).submap.path.front().second);
+  bool found = false;
+  for (const auto& piece : paths.pieces) found = found || (piece.front().x == start.x && piece.front().y == start.y);
+  EXPECT_TRUE(found) << "the start submap's path, placed by the sample";
 }
 
 // Sec. 4.4: a match child is a copy of its parent that stores only its changes.

@@ -12,6 +12,7 @@
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/seg_slam.hpp"
+#include "lookahead/slam/segslam/segment_picture.hpp"
 
 namespace lookahead::slam::segslam {
 
@@ -27,6 +28,12 @@ double scaled_entropy(const ProbabilityMap& map);
 
 /// One full map sample grown from particle `particle`'s open submap.
 MapSample sample_full_map(const SegSlam& filter, std::size_t particle, std::mt19937_64& rng);
+
+/// The robot's path as the sample places it: each placed submap's own path in its sample
+/// frame, in time order, with an X where a placed submap was a re-entry. What the map of the
+/// sample was built from, so a picture of the two agrees (the best particle's eq. 11 chain may
+/// place its submaps differently).
+SegmentedPath sample_paths(const SegSlam& filter, const MapSample& sample);
 
 struct MinEntropyResult {
   MapSample best;

@@ -24,7 +24,6 @@
 #include "lookahead/slam/rbpf/scan_matcher.hpp"
 #include "lookahead/slam/segslam/grid_submap_ops.hpp"
 #include "lookahead/slam/segslam/seg_map.hpp"
-#include "lookahead/slam/segslam/segment_picture.hpp"
 #include "lookahead/slam/segslam/segslam_options.hpp"
 #include "lookahead/slam/sensor/laser_scan.hpp"
 #include "lookahead/slam/sensor/likelihood_field_model.hpp"
@@ -83,9 +82,6 @@ class SegSlam {
   [[nodiscard]] Pose2 estimate() const;
   /// Particle m's reconstructed trajectory: (scan, pose in the first submap's frame) per update.
   [[nodiscard]] std::vector<std::pair<std::size_t, Pose2>> trajectory(std::size_t m) const;
-  /// The same, split by submap, with the points where the particle re-entered one (for
-  /// pictures).
-  [[nodiscard]] SegmentedPath segmented_trajectory(std::size_t m) const;
   /// Particle m's pose at every scan fed so far: its trajectory, with scans between updates
   /// (and after the last one, the look-ahead tail) placed by dead reckoning.
   [[nodiscard]] std::vector<Pose2> trajectory_at_every_scan(std::size_t m) const;
