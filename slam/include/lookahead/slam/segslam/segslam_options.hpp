@@ -26,15 +26,15 @@ struct SegmentationOptions {
   /// Deviation (2D default): 4 m, not the 1 m of the paper's particle step (the standard
   /// proposal; config/segslam/standard_proposal.yaml): the RBPF's scan-matching proposal
   /// leaves far less error than eq. 13-14 models, and every fresh submap forgets the walls
-  /// the scan matcher needs. MIT CSAIL, 5 particles, 20 seeds: final error 1.4 m mean
-  /// against 3.9 m with 6 m (README, "SegSLAM on MIT CSAIL").
+  /// the scan matcher needs. MIT CSAIL, 5 particles, 20 seeds, reach up to 10 m: final error
+  /// 1.7 m mean against 2.4 / 4.0 m with 3 / 6 m (README, "Loop closure on MIT CSAIL").
   double max_motion_error = 4.0;
   /// Eq. 17: segment when the predictive score of the look-ahead window (mean share of its
   /// end points the submap explains) falls below this. 0..1; 0 disables the criterion.
   /// Deviation (2D default): off. Indoors it segments at every room and corner, and each
-  /// segment must be re-entered to keep the map whole: on MIT CSAIL (5 particles, 20 seeds)
-  /// 0.2 and 0.35 gave 11.7 m and 12.7 m mean final error against 1.4 m with it off. The
-  /// paper's particle step (standard_proposal.yaml) and the 3D filter keep 0.5.
+  /// segment must be re-entered to keep the map whole: on MIT CSAIL (5 particles, 20 seeds,
+  /// reach up to 10 m) 0.2 and 0.35 gave 11.7 m and 12.7 m mean final error against 1.7 m
+  /// with it off. The paper's particle step (standard_proposal.yaml) and the 3D filter keep 0.5.
   double predictive_threshold = 0.0;
   /// Window scans scored by eq. 17 (evenly spread; bounds the cost). >= 1.
   int predictive_scans = 4;
