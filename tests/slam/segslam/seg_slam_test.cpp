@@ -206,26 +206,10 @@ TEST(SegSlam, TheWidenedReachFindsAGuessBeyondTheFixedSearch) {
 // Sec. 4.5: both matchers bring a window seen from a known pose back onto the map from a
 // guess 0.4 m and 0.1 rad off.
 TEST(SegSlam, BothMatchersRecoverTheWindowPose) {
-  const auto world = test::room_world();
-  OccupancyGrid map;
-  for (double x = 1.5; x < 8.5; x += 0.5) insert_scan(map, {x, 1.0, 0}, test::simulate_scan(world, {x, 1.0, 0}, {}), {});
+  const OccupancyGrid map = room_corridor_map();
   const Pose2 truth{4.0, 1.0, 0.0};
-  LookaheadWindow w;
-  Points2 points;
-  LikelihoodOptions lo;
-  for (int k = 0; k < 4; ++k) {
-    const Pose2 rel{0.3 * k, 0, 0};
-    const LaserScan s = test::simulate_scan(world, truth.compose(rel), {});
-    w.scans.push_back(prepare_scan(s, lo));
-    w.relative_poses.push_back(rel);
-    for (std::size_t b = 0; b < s.ranges.size(); ++b) {
-      if (!std::isfinite(s.ranges[b])) continue;
-      const Pose2 end = rel.compose({s.ranges[b] * std::cos(s.bearing(b)), s.ranges[b] * std::sin(s.bearing(b)), 0});
-      points.emplace_back(end.x, end.y);
-    }
-  }
-  w.cloud = bin_points(points, 0.1);
-  const LikelihoodFieldModel likelihood(lo, map);
+  const LookaheadWindow w = window_from(truth);
+  const LikelihoodFieldModel likelihood(LikelihoodOptions{}, map);
   MatchingOptions o;
   const Pose2 guess{4.3, 1.25, 0.1};
   const WindowMatch icp = match_window(map, match_target_of(map, o, likelihood), w, guess, o);
