@@ -45,6 +45,8 @@ SegSlamOptions segslam3d_defaults() {
   // garage's sweeps weigh by ray casting, and its studies ran with these.
   o.segmentation.max_motion_error = 1.0;
   o.segmentation.predictive_threshold = 0.5;
+  o.segmentation.slam_factor = 0.5;
+  o.matching.max_search_radius = 6.0;  // beyond it the wide stage (wide_reentry.hpp)
   return o;
 }
 

@@ -21,14 +21,21 @@ struct SegmentationOptions {
   double alpha_rotation = 0.3;
   /// ... times this factor, the expected share left after SLAM corrections (sec. 4.3.1,
   /// "a slightly less pessimistic dead-reckoning error model"). (0, 1].
-  double slam_factor = 0.5;
+  /// Deviation (2D default): 1, the 3D filter and the paper's particle step keep 0.5. The
+  /// error also sizes the matching reach and eq. 18's sigma_tau (candidate_reach.hpp): on MIT
+  /// CSAIL a 5-particle filter drifted 3-4 m in its first 150 m, beyond the reach 0.5 gave,
+  /// and runs that missed that first re-entry never closed a loop. Seeds 41-60 (fresh after
+  /// tuning on 1-40): 2.65 m mean final error against 8.63 m with 0.5 (segments of the same
+  /// length: max_motion_error 8 against 4; README, "Loop closure on MIT CSAIL").
+  double slam_factor = 1.0;
   /// Segment when the estimated error in the submap reaches this [m]. > 0.
   /// Deviation (2D default): 4 m, not the 1 m of the paper's particle step (the standard
   /// proposal; config/segslam/standard_proposal.yaml): the RBPF's scan-matching proposal
   /// leaves far less error than eq. 13-14 models, and every fresh submap forgets the walls
-  /// the scan matcher needs. MIT CSAIL, 5 particles, 20 seeds, reach up to 10 m: final error
-  /// 1.7 m mean against 2.4 / 4.0 m with 3 / 6 m (README, "Loop closure on MIT CSAIL").
-  double max_motion_error = 4.0;
+  /// the scan matcher needs. MIT CSAIL, 5 particles, 20 seeds, slam_factor 0.5, reach up to
+  /// 10 m: final error 1.7 m mean at 4 m against 2.4 / 4.0 m at 3 / 6 m (README, "Loop closure
+  /// on MIT CSAIL"); 8 m with slam_factor 1 is the same segment length.
+  double max_motion_error = 8.0;
   /// Eq. 17: segment when the predictive score of the look-ahead window (mean share of its
   /// end points the submap explains) falls below this. 0..1; 0 disables the criterion.
   /// Deviation (2D default): off. Indoors it segments at every room and corner, and each
@@ -62,7 +69,9 @@ struct MatchingOptions {
   /// The coarse search, the proximity radius and eq. 18's sigma_tau widen with the eq. 13-14
   /// error accumulated since the candidate was left, the search up to this [m]
   /// (candidate_reach.hpp; both filters; the 3D's --max-search-radius overrides it). >= 0.
-  double max_search_radius = 6.0;
+  /// 2D default 10 m (the 3D filter's 6 m, where its wide stage reaches beyond): on MIT CSAIL
+  /// seeds 1-40, 5 particles, 2.52 m mean final error against 2.85 m with 6 m.
+  double max_search_radius = 10.0;
   int icp_iterations = 30;
   double icp_max_distance = 0.4;  ///< correspondences farther than this are outliers [m]
   /// Eq. 18: p(err_ICP) = exp(-err^2 / 2 sigma^2) with the mean nearest-neighbour error ...
