@@ -153,7 +153,7 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
     // Deviation (candidate_reach.hpp, as in 3D): the reach widens with the error since the
     // candidate was left. On MIT CSAIL (real odometry, 5 particles) the map sample's guesses
     // were several metres off after the building's loops; with the fixed 2 m search 19 of 20
-    // runs ended over 1 m off (9.4 m mean against 1.4 m, README).
+    // runs ended over 1 m off (9.4 m mean against 1.4 m; slam_factor 0.5, 4 m segments, README).
     const MatchingOptions reach = candidate_reach(o, error_since(id), o.max_search_radius);
     if (d > reach.proximity_radius || !has_observed_near(c.map, guess.x, guess.y, reach.proximity_radius)) continue;
     candidates.push_back({d, id, guess, reach});
