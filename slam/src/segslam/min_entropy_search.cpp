@@ -55,6 +55,7 @@ SegmentedPath sample_paths(const SegSlam& filter, const MapSample& sample) {
     return a.first->interval.first_scan < b.first->interval.first_scan;
   });
   SegmentedPath out;
+  out.label = "paths of the map's submaps, one colour each";
   for (const auto& [submap, frame] : placed) {
     std::vector<Pose2> piece;
     for (const auto& [scan, pose] : submap->path) piece.push_back(frame.compose(pose));

@@ -49,7 +49,7 @@ void write_segment_picture(const std::string& png_path, const ProbabilityMap& ma
   const int y0 = 4 + 18 * 5;
   cv::rectangle(img, cv::Rect(0, y0 - 14, kLegendPanelWidth, 40), cv::Scalar(255, 255, 255), cv::FILLED);
   for (int k = 0; k < 3; ++k) cv::line(img, {10 + 10 * k, y0 - 5}, {20 + 10 * k, y0 - 5}, colour(static_cast<std::size_t>(k)), 3);
-  cv::putText(img, "SegSLAM trajectory, one colour per submap", {48, y0}, cv::FONT_HERSHEY_SIMPLEX, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
+  cv::putText(img, path.label, {48, y0}, cv::FONT_HERSHEY_SIMPLEX, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
   cv::putText(img, "X", {19, y0 + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.5, {0, 0, 0}, 2, cv::LINE_AA);
   cv::putText(img, "match: re-entry into an old submap", {48, y0 + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
   if (!cv::imwrite(png_path, img)) throw ParseError(png_path, 0, "", "", "cannot write image");
