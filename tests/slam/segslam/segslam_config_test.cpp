@@ -68,6 +68,15 @@ TEST(SegSlamConfig, ErrorsNameFileLineKeyAndValue) {
     EXPECT_EQ(e.value(), "-3");
   }
   EXPECT_THROW(parse_segslam_options("filter:\n  particles: 3\n", "s.yaml"), ParseError);
+  try {
+    parse_segslam_options("matching:\n  confirmed_boost: 0.5\n", "s.yaml");
+    FAIL() << "a boost below 1 would penalise confirmed matches";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.field(), "matching.confirmed_boost");
+    EXPECT_EQ(e.value(), "0.5");
+  }
+  EXPECT_THROW(parse_segslam_options("matching:\n  confirm_angle: 0\n", "s.yaml"), ParseError);
 }
 
 }  // namespace
