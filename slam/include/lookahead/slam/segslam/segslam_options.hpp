@@ -94,7 +94,7 @@ struct MatchingOptions {
   /// (config/segslam/few_particles.yaml sets 10): MIT CSAIL, 5 particles, seeds 1-120: 2.35 m
   /// mean final error against 2.59 m without (1.33 against 1.49 m median, 45 runs under 1 m
   /// against 31, 7 over 5 m against 10; Mann-Whitney one-sided p = 0.13); at 40 particles,
-  /// seeds 1-10, 1.69 m against 0.97 m (median 0.79 against 0.06 m), so not the default
+  /// seeds 1-30, 1.48 m against 0.94 m (median 1.31 against 0.08 m), so not the default
   /// (README, "Loop closure on MIT CSAIL").
   double confirmed_boost = 1.0;
   double confirm_distance = 1.0;
