@@ -101,12 +101,19 @@ int run_segslam(const SegSlamArgs& a) {
   std::filesystem::create_directories(a.out);
   slam::write_map(best.best.map, a.out, "map");
   write_trajectory_files(a, log, filter);
+  {  // the path the map was pasted from (bench/segslam/csail_error.py --global scores maps by it)
+    const std::vector<slam::Pose2> path = slam::segslam::sample_trajectory_at_every_scan(filter, best.best);
+    std::vector<slam::StampedPose> stamped;
+    for (std::size_t i = 0; i < path.size(); ++i) stamped.push_back({log.scans[i].timestamp, path[i]});
+    slam::write_trajectory(a.out + "/map_trajectory.txt", stamped);
+  }
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.scans) odometry.push_back(s.odometry);
   // The paths of the submaps the map was pasted from, so the picture's path and walls agree.
   slam::segslam::write_segment_picture(a.out + "/map.png", best.best.map, odometry,
                                        slam::segslam::sample_paths(filter, best.best),
-                                       std::filesystem::path(log.path).filename().string() + " - SegSLAM, min-entropy map");
+                                       std::filesystem::path(log.path).filename().string() + " - SegSLAM, min-entropy map" +
+                                           (best.best.chain ? " (the best particle's chain)" : ""));
   const slam::Pose2 final_pose = filter.estimate();
   nlohmann::json j = statistics_json(filter);
   j["log"] = log.path;
@@ -120,11 +127,15 @@ int run_segslam(const SegSlamArgs& a) {
   j["map_samples"] = best.entropies.size();
   j["map_sample_entropies"] = best.entropies;
   j["min_entropy_nats_m2"] = best.best.entropy;
+  j["chain_entropy_nats_m2"] = best.chain_entropy;  // 0 with offline.particle_chain off
+  j["map_is_particle_chain"] = best.best.chain;
+  j["map_particle"] = best.best.particle;
   j["parameters_yaml"] = slam::dump_rbpf_options(rbpf);
   j["segslam_parameters_yaml"] = slam::dump_segslam_options(options);
   std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
-  spdlog::info("done: filter {:.1f} s, offline search {:.1f} s ({} samples, min entropy {:.1f}); {} segments, {} matches; wrote {}/map.png",
-               filter_s, offline_s, best.entropies.size(), best.best.entropy, filter.segmap().segment_count(),
+  spdlog::info("done: filter {:.1f} s, offline search {:.1f} s ({} samples{}, min entropy {:.1f}{}); {} segments, {} matches; wrote {}/map.png",
+               filter_s, offline_s, best.entropies.size(), options.offline.particle_chain ? " and the best particle's chain" : "",
+               best.best.entropy, best.best.chain ? ", the chain's" : "", filter.segmap().segment_count(),
                filter.statistics().matches, a.out);
   return 0;
 }

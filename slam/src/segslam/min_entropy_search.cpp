@@ -9,6 +9,7 @@
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
+#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
 
 namespace lookahead::slam::segslam {
 
@@ -30,6 +31,14 @@ MapSample sample_full_map(const SegSlam& filter, std::size_t particle, std::mt19
     for (auto& p : s.placed) p.frame = to_world.compose(p.frame);
     break;
   }
+  paste_sample(filter, s);
+  return s;
+}
+
+void paste_sample(const SegSlam& filter, MapSample& s) {
+  const GridSegMap& segmap = filter.segmap();
+  const GridSubmap& start = filter.particles().at(s.particle).submap;
+  auto submap_of = [&](std::size_t i) -> const GridSubmap& { return i == 0 ? start : segmap.at(s.placed[i].id); };
   const GridOptions& grid = filter.rbpf_options().grid;
   MapCanvas canvas(grid.resolution, grid.log_odds_min, grid.log_odds_max);
   for (std::size_t i = 0; i < s.placed.size(); ++i) {
@@ -42,6 +51,28 @@ MapSample sample_full_map(const SegSlam& filter, std::size_t particle, std::mt19
   }
   s.map = canvas.to_probability_map();
   s.entropy = scaled_entropy(s.map);
+}
+
+MapSample particle_chain_sample(const SegSlam& filter, std::size_t particle) {
+  const GridSegMap& segmap = filter.segmap();
+  const GridSubmap& open = filter.particles().at(particle).submap;
+  std::vector<std::size_t> ids{kNoSubmap};  // the open submap, then its predecessors
+  for (std::size_t id = open.predecessor; id != kNoSubmap && segmap.contains(id); id = segmap.at(id).predecessor) {
+    ids.push_back(id);
+  }
+  std::reverse(ids.begin(), ids.end());
+  std::vector<const GridSubmap*> chain;
+  for (std::size_t id : ids) chain.push_back(id == kNoSubmap ? &open : &segmap.at(id));
+  const std::vector<Pose2> frames = chain_frames_with_matches(segmap, chain);  // as SegSlam::trajectory
+  MapSample s;
+  s.particle = particle;
+  s.chain = true;
+  // The open submap first, as in a breadth-first sample; each older one reached from the next.
+  s.placed.push_back({kNoSubmap, frames.back(), 0});
+  for (std::size_t k = ids.size() - 1; k-- > 0;) {
+    s.placed.push_back({ids[k], frames[k], static_cast<int>(s.placed.size()), s.placed.size() - 1, 0});
+  }
+  paste_sample(filter, s);
   return s;
 }
 
@@ -68,6 +99,32 @@ SegmentedPath sample_paths(const SegSlam& filter, const MapSample& sample) {
   return out;
 }
 
+std::vector<Pose2> sample_trajectory_at_every_scan(const SegSlam& filter, const MapSample& sample) {
+  const std::vector<LaserScan>& scans = filter.scans();
+  struct At {
+    std::size_t scan;
+    std::size_t submap_start;  // first scan of the submap the pose is in
+    Pose2 pose;                // in the sample frame
+  };
+  std::vector<At> at;
+  for (std::size_t i = 0; i < sample.placed.size(); ++i) {
+    const GridSubmap& s = i == 0 ? filter.particles().at(sample.particle).submap : filter.segmap().at(sample.placed[i].id);
+    for (const auto& [scan, pose] : s.path) at.push_back({scan, s.interval.first_scan, sample.placed[i].frame.compose(pose)});
+  }
+  if (at.empty()) return {};
+  // By scan; at a switch scan the newer submap's pose comes last, so it is the one used.
+  std::sort(at.begin(), at.end(), [](const At& a, const At& b) {
+    return a.scan != b.scan ? a.scan < b.scan : a.submap_start < b.submap_start;
+  });
+  std::vector<Pose2> out;
+  std::size_t k = 0;  // the latest pose at or before the scan (the first one before it)
+  for (std::size_t scan = 0; scan < scans.size(); ++scan) {
+    while (k + 1 < at.size() && at[k + 1].scan <= scan) ++k;
+    out.push_back(at[k].pose.compose(scans[at[k].scan].odometry.between(scans[scan].odometry)));
+  }
+  return out;
+}
+
 MinEntropyResult min_entropy_search(const SegSlam& filter, int samples, std::uint64_t seed, int threads) {
   std::vector<double> logw;
   for (const SegParticle& p : filter.particles()) logw.push_back(p.log_weight);
@@ -87,6 +144,11 @@ MinEntropyResult min_entropy_search(const SegSlam& filter, int samples, std::uin
     if (drawn[i].entropy < drawn[best].entropy) best = i;
   }
   r.best = std::move(drawn[best]);
+  if (filter.options().offline.particle_chain) {
+    MapSample chain = particle_chain_sample(filter, filter.best_particle());
+    r.chain_entropy = chain.entropy;
+    if (chain.entropy < r.best.entropy) r.best = std::move(chain);
+  }
   return r;
 }
 

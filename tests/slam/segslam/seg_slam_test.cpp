@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -39,19 +40,32 @@ std::vector<std::pair<Pose2, LaserScan>> two_loops() {
   return out;
 }
 
-TEST(SegSlam, SegmentsMatchesAndClosesTheLoop) {
+// Three particles, short segments and a short temporal separation: the test room's scale.
+RbpfOptions room_rbpf() {
   RbpfOptions rbpf;
   rbpf.particles = 3;
   rbpf.threads = 1;
   rbpf.linear_update = 0.3;
+  return rbpf;
+}
+
+SegSlamOptions room_options() {
   SegSlamOptions o;
   o.segmentation.min_segment_updates = 6;
   o.segmentation.max_motion_error = 0.4;
   o.matching.min_separation_s = 10;
-  SegSlam filter(rbpf, o);
-  const auto data = two_loops();
+  return o;
+}
+
+void feed(SegSlam& filter, const std::vector<std::pair<Pose2, LaserScan>>& data) {
   for (const auto& d : data) filter.add_scan(d.second);
   filter.finish();
+}
+
+TEST(SegSlam, SegmentsMatchesAndClosesTheLoop) {
+  SegSlam filter(room_rbpf(), room_options());
+  const auto data = two_loops();
+  feed(filter, data);
   EXPECT_GT(filter.statistics().segmentations, 2u);
   EXPECT_GT(filter.statistics().matches, 0u);
   const Pose2 truth = data.back().first, odom = data.back().second.odometry;
@@ -80,6 +94,43 @@ TEST(SegSlam, SegmentsMatchesAndClosesTheLoop) {
   bool found = false;
   for (const auto& piece : paths.pieces) found = found || (piece.front().x == start.x && piece.front().y == start.y);
   EXPECT_TRUE(found) << "the start submap's path, placed by the sample";
+}
+
+// The best particle's own chain as a map (offline.particle_chain): its path is the
+// particle's eq. 11 trajectory, and the search returns it only where its entropy is least.
+TEST(SegSlam, TheParticleChainMapFollowsTheParticlesTrajectory) {
+  SegSlam filter(room_rbpf(), room_options());
+  feed(filter, two_loops());
+  ASSERT_GT(filter.statistics().matches, 0u);
+  const std::size_t best = filter.best_particle();
+  const MapSample chain = particle_chain_sample(filter, best);
+  EXPECT_TRUE(chain.chain);
+  std::size_t length = 1;
+  for (std::size_t id = filter.particles()[best].submap.predecessor; id != kNoSubmap; id = filter.segmap().at(id).predecessor) {
+    ++length;
+  }
+  EXPECT_EQ(chain.placed.size(), length);
+  const std::vector<Pose2> path = sample_trajectory_at_every_scan(filter, chain);
+  const std::vector<Pose2> trajectory = filter.trajectory_at_every_scan(best);
+  ASSERT_EQ(path.size(), trajectory.size());
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    ASSERT_NEAR(path[i].x, trajectory[i].x, 1e-9) << "scan " << i;
+    ASSERT_NEAR(path[i].y, trajectory[i].y, 1e-9) << "scan " << i;
+    ASSERT_NEAR(normalize_angle(path[i].theta - trajectory[i].theta), 0.0, 1e-9) << "scan " << i;
+  }
+  const MinEntropyResult with = min_entropy_search(filter, 4, 1, 1);
+  EXPECT_NEAR(with.chain_entropy, chain.entropy, 1e-9);
+  EXPECT_LE(with.best.entropy, with.chain_entropy);
+  for (double h : with.entropies) EXPECT_LE(with.best.entropy, h);
+  EXPECT_EQ(with.best.chain, with.chain_entropy < *std::min_element(with.entropies.begin(), with.entropies.end()));
+  // Off: the breadth-first samples only, as the paper searches.
+  SegSlamOptions off = room_options();
+  off.offline.particle_chain = false;
+  SegSlam without(room_rbpf(), off);
+  feed(without, two_loops());
+  const MinEntropyResult r = min_entropy_search(without, 4, 1, 1);
+  EXPECT_FALSE(r.best.chain);
+  EXPECT_EQ(r.chain_entropy, 0.0);
 }
 
 // Sec. 4.4: a match child is a copy of its parent that stores only its changes.

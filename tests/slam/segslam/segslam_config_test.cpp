@@ -41,6 +41,19 @@ TEST(SegSlamConfig, ShareBySegmentReadsAndRejectsNonBooleans) {
   }
 }
 
+TEST(SegSlamConfig, ParticleChainReadsAndRejectsNonBooleans) {
+  EXPECT_TRUE(parse_segslam_options("", "s.yaml").offline.particle_chain);
+  EXPECT_FALSE(parse_segslam_options("offline:\n  particle_chain: false\n", "s.yaml").offline.particle_chain);
+  try {
+    parse_segslam_options("offline:\n  map_samples: 3\n  particle_chain: 2\n", "s.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "offline.particle_chain");
+    EXPECT_EQ(e.value(), "2");
+  }
+}
+
 TEST(SegSlamConfig, ErrorsNameFileLineKeyAndValue) {
   try {
     parse_segslam_options("matching:\n  icp_sigma: 0.1\n  icp_sigm: 1\n", "s.yaml");
