@@ -12,6 +12,7 @@
 #include "lookahead/slam/config/segslam_config.hpp"
 #include "lookahead/slam/octree/octree_io.hpp"
 #include "lookahead/slam/octree/octree_top_view.hpp"
+#include "lookahead/slam/eval/absolute_error.hpp"
 #include "lookahead/slam/segslam/octree_map_samples.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "process_stats.hpp"
@@ -174,8 +175,20 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
   return j;
 }
 
+// RMSE of a path's positions in the plane from the truth after the best SE(2) alignment: how
+// consistent a map drawn along that path is (the 2D study's measure, bench/segslam/csail_error.py --global).
+double aligned_planar_rmse(const slam::RangeLog3& log, const std::vector<slam::Pose4>& path) {
+  std::vector<slam::StampedPose> truth, estimate;
+  for (std::size_t i = 0; i < log.sweeps.size() && i < path.size(); ++i) {
+    truth.push_back({static_cast<double>(i), slam::Pose4::level_of(*log.sweeps[i].truth).planar()});
+    estimate.push_back({static_cast<double>(i), path[i].planar()});
+  }
+  return slam::absolute_trajectory_error(truth, estimate).rmse;
+}
+
 void add_errors(nlohmann::json& j, const slam::RangeLog3& log, const SegSlam3d& f, const std::vector<slam::Pose4>& best) {
   if (!log.has_truth()) return;
+  j["trajectory_aligned_rmse_m"] = aligned_planar_rmse(log, best);
   const Eigen::Vector3d end = log.sweeps.back().truth->translation();
   double length = 0;
   for (std::size_t i = 1; i < log.sweeps.size(); ++i) {
@@ -230,7 +243,8 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   for (const auto& s : log.sweeps) odometry.push_back(slam::Pose4::level_of(s.odometry).planar());
   slam::segslam::write_segment_picture(
       run.out + "/trajectory.png", slam::top_view(best_map.best.map), odometry, filter.segmented_trajectory(best),
-      fmt::format("slam3d {} - segslam, {} particles (top view, min-entropy map)", run.name, filter.particles().size()));
+      fmt::format("slam3d {} - segslam, {} particles (top view, min-entropy map{})", run.name, filter.particles().size(),
+                  best_map.best.chain ? ": the best particle's chain" : ""));
 
   nlohmann::json j = statistics_json(filter, log);
   j["input"] = run.input;
@@ -253,6 +267,11 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
                        {"confirm_distance_m", wide.confirm_distance}, {"confirm_angle_rad", wide.confirm_angle},
                        {"retry_updates", wide.retry_updates}, {"max_particles", wide.max_particles}};
   j["map_entropy_nats_m3"] = best_map.best.entropy;
+  j["chain_entropy_nats_m3"] = best_map.chain_entropy;  // 0 with offline.particle_chain off
+  j["map_is_particle_chain"] = best_map.best.chain;
+  if (log.has_truth()) {
+    j["map_path_aligned_rmse_m"] = aligned_planar_rmse(log, slam::segslam::sample_trajectory_at_every_sweep(filter, best_map.best));
+  }
   j["sample_entropies"] = best_map.entropies;
   j["map_known_voxels"] = best_map.best.map.known_voxels();
   j["peak_memory_mb"] = peak_memory_mb();

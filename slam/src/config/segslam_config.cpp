@@ -56,7 +56,7 @@ void visit_sections(SegSlamOptions& o, V&& v) {
   v("merge_max_error", l.merge_max_error, "merge when the re-entry match error was at most this [m]");
   v.section("offline");
   v("map_samples", o.offline.map_samples, "map samples of the minimum-entropy search");
-  v("particle_chain", o.offline.particle_chain, "2D: the best particle's own chain of submaps is a candidate map too");
+  v("particle_chain", o.offline.particle_chain, "the best particle's own chain of submaps is a candidate map too");
 }
 
 }  // namespace

@@ -31,6 +31,7 @@ TEST(SegSlam3d, ShortGarageSegmentSegmentsAndStaysNearTheTruth) {
   o.filter.threads = 2;
   o.segslam.segmentation.min_segment_updates = 5;
   o.segslam.segmentation.max_motion_error = 0.2;
+  o.segslam.offline.particle_chain = true;  // off in 3D's defaults; tested here
   SegSlam3d filter(o);
   for (const RangeSweep& s : log.sweeps) filter.add_sweep(s);
   filter.finish();
@@ -54,6 +55,21 @@ TEST(SegSlam3d, ShortGarageSegmentSegmentsAndStaysNearTheTruth) {
   EXPECT_EQ(sample.placed.size(), path.pieces.size());  // no loop: the sample is the chain
   EXPECT_GT(sample.map.known_voxels(), 1000U);
   EXPECT_GT(sample.entropy, 0.0);
+  // The best particle's chain as a map (offline.particle_chain): its path is the particle's
+  // eq. 11 trajectory, and the search returns it only where its entropy is least.
+  const OctreeMapSample chain = particle_chain_sample(filter, filter.best_particle());
+  EXPECT_TRUE(chain.chain);
+  EXPECT_EQ(chain.placed.size(), path.pieces.size());
+  const std::vector<Pose4> along = sample_trajectory_at_every_sweep(filter, chain);
+  const std::vector<Pose4> trajectory = filter.trajectory_at_every_sweep(filter.best_particle());
+  ASSERT_EQ(along.size(), trajectory.size());
+  for (std::size_t i = 0; i < along.size(); ++i) {
+    ASSERT_NEAR((along[i].position() - trajectory[i].position()).norm(), 0.0, 1e-9) << "sweep " << i;
+  }
+  const OctreeMinEntropyResult best = min_entropy_search(filter, 2, 1);
+  EXPECT_NEAR(best.chain_entropy, chain.entropy, 1e-6 * chain.entropy);
+  EXPECT_LE(best.best.entropy, best.chain_entropy);
+  for (double h : best.entropies) EXPECT_LE(best.best.entropy, h);
 }
 
 // Driving the garage's first aisle back and forth (the later legs re-enter the first legs'

@@ -147,6 +147,7 @@ class SegSlam3d {
   [[nodiscard]] const OctreeSegMap& segmap() const { return segmap_; }
   [[nodiscard]] const SegSlam3dOptions& options() const { return options_; }
   [[nodiscard]] const SegSlam3dStatistics& statistics() const { return stats_; }
+  [[nodiscard]] const std::vector<RangeSweep>& sweeps() const { return sweeps_; }
   [[nodiscard]] std::size_t best_particle() const;
   /// Particle m's pose at its last update in the first submap's frame (the odometry frame
   /// of the first sweep), by eq. 11 with matches closing loops.
