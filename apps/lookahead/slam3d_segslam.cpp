@@ -219,6 +219,10 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   if (run.wide_retry_updates >= 0) options.extras.wide.retry_updates = run.wide_retry_updates;
   if (run.wide_max_particles >= 0) options.extras.wide.max_particles = static_cast<std::size_t>(run.wide_max_particles);
   if (run.search_per_particle) options.segslam.matching.share_by_segment = false;
+  if (run.map_samples >= 0) {
+    options.segslam.offline.map_samples = run.map_samples;
+    slam::segslam::validate(options.segslam);  // 0 only with offline.particle_chain
+  }
   SegSlam3d filter(options);
   ProgressBar bar("segslam3d", log.sweeps.size());
   const auto start = std::chrono::steady_clock::now();
@@ -230,7 +234,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   bar.finish();
   const double wall = seconds_since(start);
   const auto search_start = std::chrono::steady_clock::now();
-  const int samples = run.map_samples >= 1 ? run.map_samples : options.segslam.offline.map_samples;
+  const int samples = options.segslam.offline.map_samples;
   const auto best_map = slam::segslam::min_entropy_search(filter, samples, options.filter.seed);
   const double search_s = seconds_since(search_start);
 

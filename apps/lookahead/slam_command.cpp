@@ -189,7 +189,7 @@ Run add_slam_command(CLI::App& app) {
                  "--config then takes a hybrid YAML)")
       ->check(CLI::IsMember({"rbpf", "segslam", "hybrid"}))->capture_default_str();
   app.add_option("--segslam-config", args->segslam_config, "SegSLAM YAML options (see config/segslam/default.yaml)");
-  app.add_option("--map-samples", args->map_samples, "SegSLAM: map samples of the minimum-entropy search");
+  app.add_option("--map-samples", args->map_samples, "SegSLAM: map samples of the minimum-entropy search (0: the best particle's chain alone)");
   return [args] {
     if (args->method == "segslam") {
       return run_segslam({args->log, args->out, args->config, args->segslam_config, args->particles, args->seed,

@@ -78,7 +78,10 @@ int run_segslam(const SegSlamArgs& a) {
   if (a.threads >= 0) rbpf.threads = a.threads;
   slam::segslam::SegSlamOptions options;
   if (!a.segslam_config.empty()) options = slam::load_segslam_options(a.segslam_config);
-  if (a.map_samples > 0) options.offline.map_samples = a.map_samples;
+  if (a.map_samples >= 0) {
+    options.offline.map_samples = a.map_samples;
+    slam::segslam::validate(options);  // 0 only with offline.particle_chain
+  }
   spdlog::info("reading {}", a.log);
   const slam::LaserLog log = read_log(a);
   spdlog::info("{} scans; SegSLAM with {} particles, look-ahead {} s", log.scans.size(), rbpf.particles,

@@ -138,6 +138,11 @@ MinEntropyResult min_entropy_search(const SegSlam& filter, int samples, std::uin
     drawn[static_cast<std::size_t>(i)] = sample_full_map(filter, pick(rng), rng);
   }
   MinEntropyResult r;
+  if (drawn.empty()) {  // map_samples 0 (validated: only with offline.particle_chain)
+    r.best = particle_chain_sample(filter, filter.best_particle());
+    r.chain_entropy = r.best.entropy;
+    return r;
+  }
   std::size_t best = 0;
   for (std::size_t i = 0; i < drawn.size(); ++i) {
     r.entropies.push_back(drawn[i].entropy);

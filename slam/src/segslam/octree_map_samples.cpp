@@ -99,7 +99,9 @@ OctreeMinEntropyResult min_entropy_search(const SegSlam3d& filter, int samples, 
   for (const SegParticle3& p : filter.particles()) logw.push_back(p.log_weight);
   const std::vector<double> w = normalized_weights(logw);
   OctreeMinEntropyResult r;
-  for (int i = 0; i < std::max(1, samples); ++i) {
+  // samples 0: the chain alone (offline.particle_chain; validated), else at least one sample.
+  const int drawn = filter.options().segslam.offline.particle_chain ? std::max(0, samples) : std::max(1, samples);
+  for (int i = 0; i < drawn; ++i) {
     std::mt19937_64 rng(mix_seed(seed, 0xE273D, static_cast<std::uint64_t>(i)));
     std::discrete_distribution<std::size_t> pick(w.begin(), w.end());
     OctreeMapSample s = sample_full_map(filter, pick(rng), rng);
@@ -109,7 +111,7 @@ OctreeMinEntropyResult min_entropy_search(const SegSlam3d& filter, int samples, 
   if (filter.options().segslam.offline.particle_chain) {
     OctreeMapSample chain = particle_chain_sample(filter, filter.best_particle());
     r.chain_entropy = chain.entropy;
-    if (chain.entropy < r.best.entropy) r.best = std::move(chain);
+    if (drawn == 0 || chain.entropy < r.best.entropy) r.best = std::move(chain);
   }
   return r;
 }

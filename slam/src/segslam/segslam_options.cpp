@@ -39,7 +39,8 @@ void validate(const SegSlamOptions& o) {
   const LockingOptions& l = o.locking;
   require(l.lock_max_error >= 0 && l.merge_max_error >= 0, "locking.*_max_error >= 0");
   require(l.lock_min_merged_visits >= 0, "locking.lock_min_merged_visits >= 0");
-  require(o.offline.map_samples >= 1, "offline.map_samples >= 1");
+  require(o.offline.map_samples >= (o.offline.particle_chain ? 0 : 1),
+          "offline.map_samples >= 1 (>= 0 with offline.particle_chain: the chain alone)");
 }
 
 }  // namespace lookahead::slam::segslam

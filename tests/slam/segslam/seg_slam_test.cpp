@@ -123,6 +123,11 @@ TEST(SegSlam, TheParticleChainMapFollowsTheParticlesTrajectory) {
   EXPECT_LE(with.best.entropy, with.chain_entropy);
   for (double h : with.entropies) EXPECT_LE(with.best.entropy, h);
   EXPECT_EQ(with.best.chain, with.chain_entropy < *std::min_element(with.entropies.begin(), with.entropies.end()));
+  // No samples: the chain is the map.
+  const MinEntropyResult alone = min_entropy_search(filter, 0, 1, 1);
+  EXPECT_TRUE(alone.best.chain);
+  EXPECT_TRUE(alone.entropies.empty());
+  EXPECT_NEAR(alone.best.entropy, chain.entropy, 1e-9);
   // Off: the breadth-first samples only, as the paper searches.
   SegSlamOptions off = room_options();
   off.offline.particle_chain = false;

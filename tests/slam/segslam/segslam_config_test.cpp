@@ -52,6 +52,9 @@ TEST(SegSlamConfig, ParticleChainReadsAndRejectsNonBooleans) {
     EXPECT_EQ(e.field(), "offline.particle_chain");
     EXPECT_EQ(e.value(), "2");
   }
+  // No map samples: allowed only when the chain is a candidate (it is then the map).
+  EXPECT_EQ(parse_segslam_options("offline:\n  map_samples: 0\n", "s.yaml").offline.map_samples, 0);
+  EXPECT_THROW(parse_segslam_options("offline:\n  map_samples: 0\n  particle_chain: false\n", "s.yaml"), ParseError);
 }
 
 TEST(SegSlamConfig, ErrorsNameFileLineKeyAndValue) {

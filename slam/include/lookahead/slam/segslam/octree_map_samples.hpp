@@ -44,8 +44,8 @@ struct OctreeMinEntropyResult {
   double chain_entropy = 0.0;     ///< of the best particle's chain (offline.particle_chain; else 0)
 };
 
-/// `samples` samples (>= 1) from particles drawn by weight, one after another, and the best
-/// particle's chain (offline.particle_chain); the least entropy wins.
+/// `samples` samples from particles drawn by weight, one after another, and the best
+/// particle's chain (offline.particle_chain; then `samples` may be 0); the least entropy wins.
 OctreeMinEntropyResult min_entropy_search(const SegSlam3d& filter, int samples, std::uint64_t seed);
 
 }  // namespace lookahead::slam::segslam

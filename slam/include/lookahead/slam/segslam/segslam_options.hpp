@@ -135,7 +135,9 @@ struct LockingOptions {
 
 /// Offline map sampling (sec. 5.4).
 struct OfflineOptions {
-  int map_samples = 30;  ///< full map samples searched for the minimum entropy map. >= 1
+  /// Full map samples searched for the minimum-entropy map. >= 1; 0 with particle_chain:
+  /// the best particle's chain is the map, no sample is drawn.
+  int map_samples = 30;
   /// The best particle's own chain of submaps (the map of its eq. 11 trajectory) is a
   /// candidate of the search too (a deviation: min_entropy_search.hpp). Off in 3D's defaults.
   bool particle_chain = true;
