@@ -132,8 +132,9 @@ WindowMatch3 judge_fit(const OctreeMatchTarget& target, const SweepWindow& windo
 void add_child_evidence(EvidenceOctree& into, const EvidenceOctree& child);
 
 /// Submaps of a map sample summed into one set of voxels (independence: overlapping evidence
-/// adds, clamped to the map's bounds); a match child pasted after its parent adds only what
-/// it changed, so copied evidence is not counted twice.
+/// adds, clamped to the map's bounds); a match child pasted with its parent (before or after
+/// it: the sum does not depend on the order) adds only what it changed, so copied evidence is
+/// not counted twice.
 class OctreeCanvas {
  public:
   explicit OctreeCanvas(const OctreeOptions& options) : options_(options), grid_(options.resolution) {}
