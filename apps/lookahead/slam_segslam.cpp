@@ -106,9 +106,13 @@ int run_segslam(const SegSlamArgs& a) {
   write_trajectory_files(a, log, filter);
   {  // the path the map was pasted from (bench/segslam/csail_error.py --global scores maps by it)
     const std::vector<slam::Pose2> path = slam::segslam::sample_trajectory_at_every_scan(filter, best.best);
-    std::vector<slam::StampedPose> stamped;
-    for (std::size_t i = 0; i < path.size(); ++i) stamped.push_back({log.scans[i].timestamp, path[i]});
+    std::vector<slam::StampedPose> stamped, logger;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      stamped.push_back({log.scans[i].timestamp, path[i]});
+      logger.push_back({log.scans[i].logger_timestamp, path[i]});
+    }
     slam::write_trajectory(a.out + "/map_trajectory.txt", stamped);
+    slam::write_trajectory(a.out + "/map_trajectory_logger_time.txt", logger);  // for lookahead eval --reference-log
   }
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.scans) odometry.push_back(s.odometry);
