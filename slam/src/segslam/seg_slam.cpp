@@ -15,6 +15,7 @@
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/segslam/candidate_reach.hpp"
+#include "lookahead/slam/segslam/compute_once.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/segmentation.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
@@ -205,33 +206,23 @@ WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, con
                                   const MatchingOptions& reach) {
   const auto key = std::make_tuple(candidate, std::lround(guess.x / kGuessStep), std::lround(guess.y / kGuessStep),
                                    std::lround(guess.theta / 0.1));
-  WindowMatch m;
-  bool found = false;
-  {
-    const std::lock_guard<std::mutex> lock(cache_mutex_);
-    const auto it = match_cache_.find(key);
-    if (it != match_cache_.end()) m = it->second, found = true;
-  }
-  if (!found) {
+  bool searched = false;
+  WindowMatch m = compute_once(match_cache_, cache_mutex_, key, [&] {
     // Searched from the rounded guess, so the result does not depend on which particle asked
     // first (determinism under threads).
     const Pose2 rounded{std::get<1>(key) * kGuessStep, std::get<2>(key) * kGuessStep, normalize_angle(std::get<3>(key) * 0.1)};
-    std::shared_ptr<const GridMatchTarget> target;
-    {
-      const std::lock_guard<std::mutex> lock(cache_mutex_);
-      target = match_targets_[candidate];
+    if (options_.matching.use_localization_filter) {
+      return localize_window(segmap_.at(candidate).map, w, rounded, reach, likelihood_, localization_seed(key));
     }
-    if (!target) {
+    const auto target = compute_once(match_targets_, cache_mutex_, candidate, [&] {
       MatchingOptions widest = options_.matching;  // the near field serves every reach up to the cap
       widest.search_radius = std::max(widest.search_radius, widest.max_search_radius);
-      target = std::make_shared<const GridMatchTarget>(match_target_of(segmap_.at(candidate).map, widest, likelihood_));
-    }
-    m = options_.matching.use_localization_filter
-            ? localize_window(segmap_.at(candidate).map, w, rounded, reach, likelihood_, localization_seed(key))
-            : match_window(segmap_.at(candidate).map, *target, w, rounded, reach);
+      return std::make_shared<const GridMatchTarget>(match_target_of(segmap_.at(candidate).map, widest, likelihood_));
+    });
+    return match_window(segmap_.at(candidate).map, *target, w, rounded, reach);
+  }, &searched);
+  if (searched) {
     const std::lock_guard<std::mutex> lock(cache_mutex_);
-    match_targets_[candidate] = target;
-    match_cache_.emplace(key, m);
     ++stats_.match_attempts;
   }
   m.translation = std::hypot(m.pose.x - guess.x, m.pose.y - guess.y);

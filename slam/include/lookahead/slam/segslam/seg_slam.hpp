@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <future>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -135,8 +136,9 @@ class SegSlam {
   SegSlamStatistics stats_;
   std::mutex cache_mutex_;
   /// ICP targets of closed submaps (immutable once closed), prepared on first use.
-  std::map<std::size_t, std::shared_ptr<const GridMatchTarget>> match_targets_;
-  std::map<std::tuple<std::size_t, long, long, long>, WindowMatch> match_cache_;
+  /// Both are filled by whichever thread asks first (compute_once.hpp).
+  std::map<std::size_t, std::shared_future<std::shared_ptr<const GridMatchTarget>>> match_targets_;
+  std::map<std::tuple<std::size_t, long, long, long>, std::shared_future<WindowMatch>> match_cache_;
 };
 
 }  // namespace lookahead::slam::segslam
