@@ -246,7 +246,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.sweeps) odometry.push_back(slam::Pose4::level_of(s.odometry).planar());
   slam::segslam::write_segment_picture(
-      run.out + "/trajectory.png", slam::top_view(best_map.best.map), odometry, filter.segmented_trajectory(best),
+      run.out + "/trajectory.png", slam::top_view(best_map.best.map), odometry, slam::segslam::sample_paths(filter, best_map.best),
       fmt::format("slam3d {} - segslam, {} particles (top view, min-entropy map{})", run.name, filter.particles().size(),
                   best_map.best.chain ? ": the best particle's chain" : ""));
 

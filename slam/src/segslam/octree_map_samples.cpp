@@ -94,6 +94,29 @@ std::vector<Pose4> sample_trajectory_at_every_sweep(const SegSlam3d& filter, con
   return out;
 }
 
+SegmentedPath sample_paths(const SegSlam3d& filter, const OctreeMapSample& sample) {
+  std::vector<std::pair<const OctreeSubmap*, Pose4>> placed;
+  for (std::size_t i = 0; i < sample.placed.size(); ++i) {
+    placed.push_back({i == 0 ? &filter.particles().at(sample.particle).submap : &filter.segmap().at(sample.placed[i].id),
+                      sample.placed[i].frame});
+  }
+  std::sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) {
+    return a.first->interval.first_scan < b.first->interval.first_scan;
+  });
+  SegmentedPath out;
+  out.label = "paths of the map's submaps, one colour each";
+  for (const auto& [submap, frame] : placed) {
+    std::vector<Pose2> piece;
+    for (const auto& [sweep, pose] : submap->path) piece.push_back(frame.compose(pose).planar());
+    out.pieces.push_back(std::move(piece));
+    if (submap->parent != kNoSubmap) {
+      const Pose4 at = frame.compose(submap->entry);
+      out.matches.emplace_back(at.x, at.y);
+    }
+  }
+  return out;
+}
+
 OctreeMinEntropyResult min_entropy_search(const SegSlam3d& filter, int samples, std::uint64_t seed) {
   std::vector<double> logw;
   for (const SegParticle3& p : filter.particles()) logw.push_back(p.log_weight);

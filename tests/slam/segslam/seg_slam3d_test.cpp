@@ -53,6 +53,15 @@ TEST(SegSlam3d, ShortGarageSegmentSegmentsAndStaysNearTheTruth) {
   std::mt19937_64 rng(1);
   const OctreeMapSample sample = sample_full_map(filter, filter.best_particle(), rng);
   EXPECT_EQ(sample.placed.size(), path.pieces.size());  // no loop: the sample is the chain
+  // The picture draws the sample's own paths: one piece per placed submap, every path pose.
+  const SegmentedPath drawn = sample_paths(filter, sample);
+  ASSERT_EQ(drawn.pieces.size(), sample.placed.size());
+  std::size_t poses = 0, drawn_poses = 0;
+  for (std::size_t i = 0; i < sample.placed.size(); ++i) {
+    poses += (i == 0 ? filter.particles().at(sample.particle).submap : filter.segmap().at(sample.placed[i].id)).path.size();
+    drawn_poses += drawn.pieces[i].size();
+  }
+  EXPECT_EQ(drawn_poses, poses);
   EXPECT_GT(sample.map.known_voxels(), 1000U);
   EXPECT_GT(sample.entropy, 0.0);
   // The best particle's chain as a map (offline.particle_chain): its path is the particle's

@@ -38,6 +38,11 @@ void paste_sample(const SegSlam3d& filter, OctreeMapSample& sample);
 /// sweeps between them by levelled dead reckoning).
 std::vector<Pose4> sample_trajectory_at_every_sweep(const SegSlam3d& filter, const OctreeMapSample& sample);
 
+/// The robot's path as the sample places it, from above: each placed submap's own path in its
+/// sample frame, in time order, with an X where a placed submap was a re-entry (as 2D's
+/// sample_paths): what the sample's map was built from, so a picture of the two agrees.
+SegmentedPath sample_paths(const SegSlam3d& filter, const OctreeMapSample& sample);
+
 struct OctreeMinEntropyResult {
   OctreeMapSample best;
   std::vector<double> entropies;  ///< of every sample grown breadth-first, in drawing order
