@@ -34,15 +34,17 @@ slam::LaserLog read_log(const SegSlamArgs& a) {
   return log;
 }
 
-void write_trajectory_files(const SegSlamArgs& a, const slam::LaserLog& log, const SegSlam& filter) {
-  const std::vector<slam::Pose2> path = filter.trajectory_at_every_scan(filter.best_particle());
+// NAME.txt (the log's time stamps) and NAME_logger_time.txt (the logger's, for lookahead eval
+// --reference-log): one pose per scan.
+void write_trajectory_files(const std::string& out, const std::string& name, const slam::LaserLog& log,
+                            const std::vector<slam::Pose2>& path) {
   std::vector<slam::StampedPose> stamped, logger;
   for (std::size_t i = 0; i < path.size(); ++i) {
     stamped.push_back({log.scans[i].timestamp, path[i]});
     logger.push_back({log.scans[i].logger_timestamp, path[i]});
   }
-  slam::write_trajectory(a.out + "/trajectory.txt", stamped);
-  slam::write_trajectory(a.out + "/trajectory_logger_time.txt", logger);
+  slam::write_trajectory(out + "/" + name + ".txt", stamped);
+  slam::write_trajectory(out + "/" + name + "_logger_time.txt", logger);
 }
 
 nlohmann::json statistics_json(const SegSlam& filter) {
@@ -103,17 +105,9 @@ int run_segslam(const SegSlamArgs& a) {
 
   std::filesystem::create_directories(a.out);
   slam::write_map(best.best.map, a.out, "map");
-  write_trajectory_files(a, log, filter);
-  {  // the path the map was pasted from (bench/segslam/csail_error.py --global scores maps by it)
-    const std::vector<slam::Pose2> path = slam::segslam::sample_trajectory_at_every_scan(filter, best.best);
-    std::vector<slam::StampedPose> stamped, logger;
-    for (std::size_t i = 0; i < path.size(); ++i) {
-      stamped.push_back({log.scans[i].timestamp, path[i]});
-      logger.push_back({log.scans[i].logger_timestamp, path[i]});
-    }
-    slam::write_trajectory(a.out + "/map_trajectory.txt", stamped);
-    slam::write_trajectory(a.out + "/map_trajectory_logger_time.txt", logger);  // for lookahead eval --reference-log
-  }
+  write_trajectory_files(a.out, "trajectory", log, filter.trajectory_at_every_scan(filter.best_particle()));
+  // The path the map was pasted from (bench/segslam/csail_error.py --global scores maps by it).
+  write_trajectory_files(a.out, "map_trajectory", log, slam::segslam::sample_trajectory_at_every_scan(filter, best.best));
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.scans) odometry.push_back(s.odometry);
   // The paths of the submaps the map was pasted from, so the picture's path and walls agree.
