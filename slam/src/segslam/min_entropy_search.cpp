@@ -9,7 +9,7 @@
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
-#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
+#include "lookahead/slam/segslam/placed_paths.hpp"
 
 namespace lookahead::slam::segslam {
 
@@ -54,75 +54,25 @@ void paste_sample(const SegSlam& filter, MapSample& s) {
 }
 
 MapSample particle_chain_sample(const SegSlam& filter, std::size_t particle) {
-  const GridSegMap& segmap = filter.segmap();
-  const GridSubmap& open = filter.particles().at(particle).submap;
-  std::vector<std::size_t> ids{kNoSubmap};  // the open submap, then its predecessors
-  for (std::size_t id = open.predecessor; id != kNoSubmap && segmap.contains(id); id = segmap.at(id).predecessor) {
-    ids.push_back(id);
-  }
-  std::reverse(ids.begin(), ids.end());
-  std::vector<const GridSubmap*> chain;
-  for (std::size_t id : ids) chain.push_back(id == kNoSubmap ? &open : &segmap.at(id));
-  const std::vector<Pose2> frames = chain_frames_with_matches(segmap, chain);  // as SegSlam::trajectory
   MapSample s;
   s.particle = particle;
   s.chain = true;
-  // The open submap first, as in a breadth-first sample; each older one reached from the next.
-  s.placed.push_back({kNoSubmap, frames.back(), 0});
-  for (std::size_t k = ids.size() - 1; k-- > 0;) {
-    s.placed.push_back({ids[k], frames[k], static_cast<int>(s.placed.size()), s.placed.size() - 1, 0});
-  }
+  s.placed = chain_placement(filter.segmap(), filter.particles().at(particle).submap);  // as SegSlam::trajectory
   paste_sample(filter, s);
   return s;
 }
 
 SegmentedPath sample_paths(const SegSlam& filter, const MapSample& sample) {
-  const GridSubmap& start = filter.particles().at(sample.particle).submap;
-  std::vector<std::pair<const GridSubmap*, Pose2>> placed;
-  for (std::size_t i = 0; i < sample.placed.size(); ++i) {
-    placed.push_back({i == 0 ? &start : &filter.segmap().at(sample.placed[i].id), sample.placed[i].frame});
-  }
-  std::sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) {
-    return a.first->interval.first_scan < b.first->interval.first_scan;
-  });
-  SegmentedPath out;
-  out.label = "paths of the map's submaps, one colour each";
-  for (const auto& [submap, frame] : placed) {
-    std::vector<Pose2> piece;
-    for (const auto& [scan, pose] : submap->path) piece.push_back(frame.compose(pose));
-    out.pieces.push_back(std::move(piece));
-    if (submap->parent != kNoSubmap) {
-      const Pose2 at = frame.compose(submap->entry);
-      out.matches.emplace_back(at.x, at.y);
-    }
-  }
-  return out;
+  return placed_paths(filter.segmap(), filter.particles().at(sample.particle).submap, sample.placed,
+                      [](const Pose2& p) { return p; });
 }
 
 std::vector<Pose2> sample_trajectory_at_every_scan(const SegSlam& filter, const MapSample& sample) {
   const std::vector<LaserScan>& scans = filter.scans();
-  struct At {
-    std::size_t scan;
-    std::size_t submap_start;  // first scan of the submap the pose is in
-    Pose2 pose;                // in the sample frame
-  };
-  std::vector<At> at;
-  for (std::size_t i = 0; i < sample.placed.size(); ++i) {
-    const GridSubmap& s = i == 0 ? filter.particles().at(sample.particle).submap : filter.segmap().at(sample.placed[i].id);
-    for (const auto& [scan, pose] : s.path) at.push_back({scan, s.interval.first_scan, sample.placed[i].frame.compose(pose)});
-  }
-  if (at.empty()) return {};
-  // By scan; at a switch scan the newer submap's pose comes last, so it is the one used.
-  std::sort(at.begin(), at.end(), [](const At& a, const At& b) {
-    return a.scan != b.scan ? a.scan < b.scan : a.submap_start < b.submap_start;
-  });
-  std::vector<Pose2> out;
-  std::size_t k = 0;  // the latest pose at or before the scan (the first one before it)
-  for (std::size_t scan = 0; scan < scans.size(); ++scan) {
-    while (k + 1 < at.size() && at[k + 1].scan <= scan) ++k;
-    out.push_back(at[k].pose.compose(scans[at[k].scan].odometry.between(scans[scan].odometry)));
-  }
-  return out;
+  return placed_path_at_every_scan(filter.segmap(), filter.particles().at(sample.particle).submap, sample.placed,
+                                   scans.size(), [&](std::size_t from, std::size_t to) {
+                                     return scans[from].odometry.between(scans[to].odometry);
+                                   });
 }
 
 MinEntropyResult min_entropy_search(const SegSlam& filter, int samples, std::uint64_t seed, int threads) {

@@ -6,7 +6,7 @@
 
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
-#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
+#include "lookahead/slam/segslam/placed_paths.hpp"
 
 namespace lookahead::slam::segslam {
 
@@ -46,75 +46,25 @@ void paste_sample(const SegSlam3d& filter, OctreeMapSample& s) {
 }
 
 OctreeMapSample particle_chain_sample(const SegSlam3d& filter, std::size_t particle) {
-  const OctreeSegMap& segmap = filter.segmap();
-  const OctreeSubmap& open = filter.particles().at(particle).submap;
-  std::vector<std::size_t> ids{kNoSubmap};  // the open submap, then its predecessors
-  for (std::size_t id = open.predecessor; id != kNoSubmap && segmap.contains(id); id = segmap.at(id).predecessor) {
-    ids.push_back(id);
-  }
-  std::reverse(ids.begin(), ids.end());
-  std::vector<const OctreeSubmap*> chain;
-  for (std::size_t id : ids) chain.push_back(id == kNoSubmap ? &open : &segmap.at(id));
-  const std::vector<Pose4> frames = chain_frames_with_matches(segmap, chain);  // as SegSlam3d::trajectory
   OctreeMapSample s;
   s.particle = particle;
   s.chain = true;
-  s.placed.push_back({kNoSubmap, frames.back(), 0});
-  for (std::size_t k = ids.size() - 1; k-- > 0;) {
-    s.placed.push_back({ids[k], frames[k], static_cast<int>(s.placed.size()), s.placed.size() - 1, 0});
-  }
+  s.placed = chain_placement(filter.segmap(), filter.particles().at(particle).submap);  // as SegSlam3d::trajectory
   paste_sample(filter, s);
   return s;
 }
 
 std::vector<Pose4> sample_trajectory_at_every_sweep(const SegSlam3d& filter, const OctreeMapSample& sample) {
   const auto& sweeps = filter.sweeps();
-  struct At {
-    std::size_t sweep;
-    std::size_t submap_start;  // first sweep of the submap the pose is in
-    Pose4 pose;                // in the sample frame
-  };
-  std::vector<At> at;
-  for (std::size_t i = 0; i < sample.placed.size(); ++i) {
-    const OctreeSubmap& s = i == 0 ? filter.particles().at(sample.particle).submap : filter.segmap().at(sample.placed[i].id);
-    for (const auto& [sweep, pose] : s.path) at.push_back({sweep, s.interval.first_scan, sample.placed[i].frame.compose(pose)});
-  }
-  if (at.empty()) return {};
-  // By sweep; at a switch sweep the newer submap's pose comes last, so it is the one used.
-  std::sort(at.begin(), at.end(), [](const At& a, const At& b) {
-    return a.sweep != b.sweep ? a.sweep < b.sweep : a.submap_start < b.submap_start;
-  });
-  std::vector<Pose4> out;
-  std::size_t k = 0;
-  for (std::size_t sweep = 0; sweep < sweeps.size(); ++sweep) {
-    while (k + 1 < at.size() && at[k + 1].sweep <= sweep) ++k;
-    const Pose4 from = Pose4::level_of(sweeps[at[k].sweep].odometry), to = Pose4::level_of(sweeps[sweep].odometry);
-    out.push_back(at[k].pose.compose(from.between(to)));
-  }
-  return out;
+  return placed_path_at_every_scan(filter.segmap(), filter.particles().at(sample.particle).submap, sample.placed,
+                                   sweeps.size(), [&](std::size_t from, std::size_t to) {
+                                     return Pose4::level_of(sweeps[from].odometry).between(Pose4::level_of(sweeps[to].odometry));
+                                   });
 }
 
 SegmentedPath sample_paths(const SegSlam3d& filter, const OctreeMapSample& sample) {
-  std::vector<std::pair<const OctreeSubmap*, Pose4>> placed;
-  for (std::size_t i = 0; i < sample.placed.size(); ++i) {
-    placed.push_back({i == 0 ? &filter.particles().at(sample.particle).submap : &filter.segmap().at(sample.placed[i].id),
-                      sample.placed[i].frame});
-  }
-  std::sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) {
-    return a.first->interval.first_scan < b.first->interval.first_scan;
-  });
-  SegmentedPath out;
-  out.label = "paths of the map's submaps, one colour each";
-  for (const auto& [submap, frame] : placed) {
-    std::vector<Pose2> piece;
-    for (const auto& [sweep, pose] : submap->path) piece.push_back(frame.compose(pose).planar());
-    out.pieces.push_back(std::move(piece));
-    if (submap->parent != kNoSubmap) {
-      const Pose4 at = frame.compose(submap->entry);
-      out.matches.emplace_back(at.x, at.y);
-    }
-  }
-  return out;
+  return placed_paths(filter.segmap(), filter.particles().at(sample.particle).submap, sample.placed,
+                      [](const Pose4& p) { return p.planar(); });
 }
 
 OctreeMinEntropyResult min_entropy_search(const SegSlam3d& filter, int samples, std::uint64_t seed) {
