@@ -36,19 +36,9 @@ MapSample sample_full_map(const SegSlam& filter, std::size_t particle, std::mt19
 }
 
 void paste_sample(const SegSlam& filter, MapSample& s) {
-  const GridSegMap& segmap = filter.segmap();
-  const GridSubmap& start = filter.particles().at(s.particle).submap;
-  auto submap_of = [&](std::size_t i) -> const GridSubmap& { return i == 0 ? start : segmap.at(s.placed[i].id); };
   const GridOptions& grid = filter.rbpf_options().grid;
   MapCanvas canvas(grid.resolution, grid.log_odds_min, grid.log_odds_max);
-  for (std::size_t i = 0; i < s.placed.size(); ++i) {
-    const GridSubmap& m = submap_of(i);
-    const GridSubmap* parent = nullptr;
-    for (std::size_t j = 0; j < s.placed.size() && m.parent != kNoSubmap; ++j) {
-      if (j != i && s.placed[j].id == m.parent) parent = &segmap.at(m.parent);
-    }
-    canvas.paste(m.map, s.placed[i].frame, parent ? &parent->map : nullptr);
-  }
+  paste_placed(filter.segmap(), filter.particles().at(s.particle).submap, s.placed, canvas);
   s.map = canvas.to_probability_map();
   s.entropy = scaled_entropy(s.map);
 }

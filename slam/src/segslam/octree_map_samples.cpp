@@ -29,18 +29,8 @@ OctreeMapSample sample_full_map(const SegSlam3d& filter, std::size_t particle, s
 }
 
 void paste_sample(const SegSlam3d& filter, OctreeMapSample& s) {
-  const OctreeSegMap& segmap = filter.segmap();
-  const OctreeSubmap& start = filter.particles().at(s.particle).submap;
-  auto submap_of = [&](std::size_t i) -> const OctreeSubmap& { return i == 0 ? start : segmap.at(s.placed[i].id); };
   OctreeCanvas canvas(filter.options().filter.map);
-  for (std::size_t i = 0; i < s.placed.size(); ++i) {
-    const OctreeSubmap& m = submap_of(i);
-    const EvidenceOctree* parent = nullptr;
-    for (std::size_t j = 0; j < s.placed.size() && m.parent != kNoSubmap; ++j) {
-      if (j != i && s.placed[j].id == m.parent) parent = &segmap.at(m.parent).map;
-    }
-    canvas.paste(m.map, s.placed[i].frame, parent);
-  }
+  paste_placed(filter.segmap(), filter.particles().at(s.particle).submap, s.placed, canvas);
   s.entropy = canvas.entropy();
   s.map = canvas.to_octree();
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// What a placed set of submaps (a map sample, or a particle's own chain) says about the
-// robot's path, generic over the map and pose types as map_sampler.hpp is: the chain placed
-// as its eq. 11 trajectory places it, the path pieces a picture draws, and one pose per scan.
+// A placed set of submaps (a map sample, or a particle's own chain), generic over the map and
+// pose types as map_sampler.hpp is: the chain placed as its eq. 11 trajectory places it, its
+// submaps pasted into one canvas, and the robot's path as the placement puts it (the pieces a
+// picture draws, one pose per scan).
 #pragma once
 
 #include <algorithm>
@@ -47,6 +48,22 @@ std::vector<std::pair<const Submap<Map, Pose>*, Pose>> placed_in_time_order(cons
     return a.first->interval.first_scan < b.first->interval.first_scan;
   });
   return out;
+}
+
+/// Pastes each placed submap (the first is `open`, the others by id) into `canvas` at its frame
+/// (`canvas.paste(map, frame, parent_map_or_null)`); a match child whose parent is placed too
+/// adds only what it changed, so copied evidence is not counted twice.
+template <class Map, class Pose, class Canvas>
+void paste_placed(const SegMap<Map, Pose>& segmap, const Submap<Map, Pose>& open,
+                  const std::vector<PlacedSubmap<Pose>>& placed, Canvas& canvas) {
+  for (std::size_t i = 0; i < placed.size(); ++i) {
+    const Submap<Map, Pose>& m = i == 0 ? open : segmap.at(placed[i].id);
+    const Map* parent = nullptr;
+    for (std::size_t j = 0; j < placed.size() && m.parent != kNoSubmap; ++j) {
+      if (j != i && placed[j].id == m.parent) parent = &segmap.at(m.parent).map;
+    }
+    canvas.paste(m.map, placed[i].frame, parent);
+  }
 }
 
 /// The path as the placement puts it, for a picture: each submap's own path in its frame, in
