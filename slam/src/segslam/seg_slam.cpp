@@ -230,13 +230,14 @@ WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, con
   return m;
 }
 
-SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const LookaheadWindow& w, std::mt19937_64& rng) {
+SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const std::function<const LookaheadWindow&()>& window,
+                                            std::mt19937_64& rng) {
   Transition t;
   const SegmentationOptions& so = options_.segmentation;
   // Eq. 17 only where it can decide (a large enough submap, motion error below its bound).
   const bool score_it = p.submap_updates >= so.min_segment_updates && p.motion_error < so.max_motion_error &&
                         so.predictive_threshold > 0;
-  const double score = score_it ? predictive_score(p.submap.map, p.pose, w, likelihood_) : -1.0;
+  const double score = score_it ? predictive_score(p.submap.map, p.pose, window(), likelihood_) : -1.0;
   const bool segment = should_segment(p.submap_updates, p.motion_error, score, so);
   std::vector<std::size_t> ids;
   std::vector<WindowMatch> matches;
@@ -247,7 +248,7 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const LookaheadWindo
   const int period = options_.matching.period_updates;
   const bool periodic = stats_.updates % static_cast<std::size_t>(period) == 0 && p.submap_updates >= period;
   if (segment || periodic) {
-    matches = match_candidates(p, w, ids, rng);
+    matches = match_candidates(p, window(), ids, rng);
     weigh_confirmed(p, ids, matches);
   }
   std::vector<double> weights;
@@ -304,7 +305,14 @@ void SegSlam::weigh_confirmed(SegParticle& p, const std::vector<std::size_t>& id
 
 void SegSlam::update(std::size_t k) {
   const Pose2 u = scans_[last_update_].odometry.between(scans_[k].odometry);
-  const LookaheadWindow w = window_after(last_update_);
+  // Built once, by the first particle that scores eq. 17 or matches: binning the window's
+  // points was serial work at every update, where three in four do neither.
+  std::once_flag window_once;
+  LookaheadWindow w;
+  const std::function<const LookaheadWindow&()> window = [&]() -> const LookaheadWindow& {
+    std::call_once(window_once, [&] { w = window_after(last_update_); });
+    return w;
+  };
   const PreparedScan prepared = prepare_scan(scans_[k], rbpf_.likelihood);
   match_cache_.clear();
   const ParticleStepModels models{rbpf_, motion_, likelihood_, matcher_};
@@ -317,7 +325,7 @@ void SegSlam::update(std::size_t k) {
   for (int i = 0; i < n; ++i) {
     SegParticle& p = particles_[static_cast<std::size_t>(i)];
     std::mt19937_64 rng(mix_seed(rbpf_.seed, stats_.updates, static_cast<std::uint64_t>(i)));
-    transitions[static_cast<std::size_t>(i)] = predict_submap(p, w, rng);
+    transitions[static_cast<std::size_t>(i)] = predict_submap(p, window, rng);
     const bool is_warm = p.submap_updates >= rbpf_.warmup_updates || p.submap.parent != kNoSubmap;
     const double before = p.log_weight;
     // A locked submap is localised in, never written (sec. 6).

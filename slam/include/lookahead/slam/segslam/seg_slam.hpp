@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <future>
 #include <map>
@@ -100,7 +101,8 @@ class SegSlam {
   void initialize();
   void update(std::size_t scan);
   LookaheadWindow window_after(std::size_t scan) const;
-  Transition predict_submap(SegParticle& p, const LookaheadWindow& w, std::mt19937_64& rng);
+  /// `window` builds the look-ahead window on first use (most updates neither score nor match).
+  Transition predict_submap(SegParticle& p, const std::function<const LookaheadWindow&()>& window, std::mt19937_64& rng);
   std::vector<WindowMatch> match_candidates(const SegParticle& p, const LookaheadWindow& w,
                                             std::vector<std::size_t>& ids, std::mt19937_64& rng);
   /// Multiplies the weights of the matches the particle's last attempt predicted by
