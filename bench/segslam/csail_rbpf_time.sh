@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The time bar of issue 6 against two RBPFs, side by side in one run on the raw MIT CSAIL log:
+# lookahead's SegSLAM, lookahead's RBPF (copy-on-write maps) and MRPT's rbpf-slam (Debian
+# mrpt-apps, "optimal sampling", the settings of BASELINES.md; every particle owns its map).
+# One run at a time, one thread each (MRPT is single-threaded), so the wall times compare.
+#
+#   bench/segslam/csail_rbpf_time.sh [BUILD=build] [OUT=bench/results/csail_rbpf_time]
+#   env: PARTICLES (default "20 40 100"), SEEDS (default "1 2 3"),
+#        METHODS (default "rbpf segslam mrpt"; also segslam-noseg: SegSLAM's filter that never
+#        segments, so one submap, and segslam-nomatch: segments that are never re-entered
+#        (min_separation_s 1e6), the floors of what SegSLAM adds to the RBPF's particle step)
+#
+# Writes OUT/runs.txt (method particles seed process_s filter_s final_m peak_mb; filter_s is
+# our filters' own wall time from run.json, "-" for MRPT, which does not report one; final_m
+# the final error against the Radish reference, bench/segslam/csail_error.py) and prints
+# OUT/summary.md: the medians per cell and the median of the per-seed time ratios.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+die() { echo "csail_rbpf_time.sh: $*" >&2; exit 1; }
+[[ $# -le 2 ]] || die "usage: csail_rbpf_time.sh [BUILD] [OUT]"
+BUILD=${1:-build}
+OUT=${2:-bench/results/csail_rbpf_time}
+DATA=${LOOKAHEAD_SHARED_DIR:-../shared}/data/mit-csail
+PARTICLES=${PARTICLES:-"20 40 100"}
+SEEDS=${SEEDS:-"1 2 3"}
+LA=$BUILD/lookahead
+LOG=$DATA/csail-oldcarmen.log
+[[ -x $LA ]] || die "$LA missing: build first (cmake --build $BUILD)"
+[[ -f $LOG ]] || die "$LOG: no such file"
+[[ -x /usr/bin/time ]] || die "/usr/bin/time missing: apt-get install time"
+export CARMEN_TO_RAWLOG=$BUILD/bench/mrpt/carmen_to_rawlog
+mkdir -p "$OUT"
+TRUTH=$OUT/csail-truth.txt
+python3 bench/segslam/csail_truth.py "$LOG" "$DATA/csail.corrected.log" > "$TRUTH"
+
+final_error() { python3 bench/segslam/csail_error.py "$1" "$TRUTH" | awk '{print $1}'; }
+filter_s() { python3 -c 'import json,sys; print(round(json.load(open(sys.argv[1]))["wall_time_s"], 2))' "$1"; }
+
+METHODS=${METHODS:-"rbpf segslam mrpt"}
+for m in $METHODS; do
+  [[ $m =~ ^(rbpf|segslam|segslam-noseg|segslam-nomatch|mrpt)$ ]] || die "unknown method '$m' in METHODS"
+done
+printf 'segmentation:\n  max_motion_error: 1000000\n' > "$OUT/noseg.yaml"
+printf 'matching:\n  min_separation_s: 1000000\n' > "$OUT/nomatch.yaml"
+
+RUNS=$OUT/runs.txt
+echo "# method particles seed process_s filter_s final_m peak_mb ($(git rev-parse --short HEAD), $(date -u +%F), $(nproc) cores)" > "$RUNS"
+for n in $PARTICLES; do
+  for s in $SEEDS; do
+    for m in $METHODS; do
+      d=$OUT/$m-p$n-s$s
+      case $m in
+        mrpt)
+          SEED=$s bench/mrpt/run_mrpt_rbpf.sh "$LOG" "$d" "$n" optimal > "$d.log" 2>&1 || die "MRPT failed, see $d.log"
+          read -r wall peak <<< "$(python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); print(j["wall_s"], int(j["peak_mb"]))' "$d/mrpt_run.json")"
+          echo "mrpt $n $s $wall - $(final_error "$d/trajectory.txt") $peak" | tee -a "$RUNS"
+          continue ;;
+        rbpf) args=(--method rbpf) ;;
+        segslam) args=(--method segslam --map-samples 1) ;;
+        segslam-noseg) args=(--method segslam --map-samples 1 --segslam-config "$OUT/noseg.yaml") ;;
+        segslam-nomatch) args=(--method segslam --map-samples 1 --segslam-config "$OUT/nomatch.yaml") ;;
+      esac
+      /usr/bin/time -f "%e %M" -o "$d.time" "$LA" slam "$LOG" "${args[@]}" --particles "$n" --seed "$s" \
+        --threads 1 --out "$d" > "$d.log" 2>&1 || die "$m failed, see $d.log"
+      read -r wall kb < "$d.time"
+      echo "$m $n $s $wall $(filter_s "$d/run.json") $(final_error "$d/trajectory.txt") $((kb / 1024))" | tee -a "$RUNS"
+    done
+  done
+done
+
+python3 - "$RUNS" > "$OUT/summary.md" <<'PY'
+import statistics as st, sys
+rows = [l.split() for l in open(sys.argv[1]) if not l.startswith('#')]
+cell = {}
+for m, n, s, wall, filt, err, mb in rows:
+    cell.setdefault((m, int(n)), {})[int(s)] = (float(wall), None if filt == '-' else float(filt), float(err), int(mb))
+def med(xs): return st.median(xs) if xs else float('nan')
+def ratio(a, b, k):
+    both = sorted(set(cell.get(a, {})) & set(cell.get(b, {})))
+    return med([cell[a][s][k] / cell[b][s][k] for s in both])
+print("| particles | method | runs | process s (median) | filter s (median) | final error m (median) | peak MB (median) |")
+print("|---|---|---|---|---|---|---|")
+for n in sorted({n for _, n in cell}):
+    for m in ('segslam', 'segslam-nomatch', 'segslam-noseg', 'rbpf', 'mrpt'):
+        c = cell.get((m, n))
+        if not c: continue
+        v = list(c.values())
+        filt = [x[1] for x in v if x[1] is not None]
+        print(f"| {n} | {m} | {len(v)} | {med([x[0] for x in v]):.1f} | {med(filt):.2f} | {med([x[2] for x in v]):.2f} | {med([x[3] for x in v]):.0f} |" if filt else
+              f"| {n} | {m} | {len(v)} | {med([x[0] for x in v]):.1f} | - | {med([x[2] for x in v]):.2f} | {med([x[3] for x in v]):.0f} |")
+print()
+print("| particles | SegSLAM / our RBPF, filter time | SegSLAM / our RBPF, process time | SegSLAM / MRPT rbpf-slam, process time | no re-entries / our RBPF, filter time | one submap / our RBPF, filter time |")
+print("|---|---|---|---|---|---|")
+for n in sorted({n for _, n in cell}):
+    r = lambda a, b, k: f"{ratio((a, n), (b, n), k):.2f}" if (a, n) in cell and (b, n) in cell else "-"
+    print(f"| {n} | {r('segslam', 'rbpf', 1)} | {r('segslam', 'rbpf', 0)} | {r('segslam', 'mrpt', 0)} | {r('segslam-nomatch', 'rbpf', 1)} | {r('segslam-noseg', 'rbpf', 1)} |")
+print()
+print("(ratios: the median over the seeds of each seed's ratio)")
+PY
+cat "$OUT/summary.md"
