@@ -35,6 +35,8 @@ TRUTH=$OUT/csail-truth.txt
 python3 bench/segslam/csail_truth.py "$LOG" "$DATA/csail.corrected.log" > "$TRUTH"
 
 final_error() { python3 bench/segslam/csail_error.py "$1" "$TRUTH" | awk '{print $1}'; }
+# Our runs say which code they timed; an uncommitted tree is marked -dirty.
+COMMIT=$(git describe --always --dirty)
 filter_s() { python3 -c 'import json,sys; print(round(json.load(open(sys.argv[1]))["wall_time_s"], 2))' "$1"; }
 
 METHODS=${METHODS:-"rbpf segslam mrpt"}
@@ -45,16 +47,17 @@ printf 'segmentation:\n  max_motion_error: 1000000\n' > "$OUT/noseg.yaml"
 printf 'matching:\n  min_separation_s: 1000000\n' > "$OUT/nomatch.yaml"
 
 RUNS=$OUT/runs.txt
-echo "# method particles seed process_s filter_s final_m peak_mb ($(git rev-parse --short HEAD), $(date -u +%F), $(nproc) cores)" > "$RUNS"
+echo "# method particles seed process_s filter_s final_m peak_mb ($COMMIT, $(date -u +%F), $(nproc) cores)" > "$RUNS"
 for n in $PARTICLES; do
   for s in $SEEDS; do
     for m in $METHODS; do
       d=$OUT/$m-p$n-s$s
       case $m in
         mrpt)
-          SEED=$s bench/mrpt/run_mrpt_rbpf.sh "$LOG" "$d" "$n" optimal > "$d.log" 2>&1 || die "MRPT failed, see $d.log"
+          OMP_NUM_THREADS=1 SEED=$s bench/mrpt/run_mrpt_rbpf.sh "$LOG" "$d" "$n" optimal > "$d.log" 2>&1 || die "MRPT failed, see $d.log"
           read -r wall peak <<< "$(python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); print(j["wall_s"], int(j["peak_mb"]))' "$d/mrpt_run.json")"
-          echo "mrpt $n $s $wall - $(final_error "$d/trajectory.txt") $peak" | tee -a "$RUNS"
+          err=$(final_error "$d/trajectory.txt") && [[ -n $err ]] || die "no final error for $d"
+          echo "mrpt $n $s $wall - $err $peak" | tee -a "$RUNS"
           continue ;;
         rbpf) args=(--method rbpf) ;;
         segslam) args=(--method segslam --map-samples 1) ;;
@@ -64,38 +67,11 @@ for n in $PARTICLES; do
       /usr/bin/time -f "%e %M" -o "$d.time" "$LA" slam "$LOG" "${args[@]}" --particles "$n" --seed "$s" \
         --threads 1 --out "$d" > "$d.log" 2>&1 || die "$m failed, see $d.log"
       read -r wall kb < "$d.time"
-      echo "$m $n $s $wall $(filter_s "$d/run.json") $(final_error "$d/trajectory.txt") $((kb / 1024))" | tee -a "$RUNS"
+      filt=$(filter_s "$d/run.json") && err=$(final_error "$d/trajectory.txt") && [[ -n $err ]] || die "no times or error for $d"
+      echo "$m $n $s $wall $filt $err $((kb / 1024))" | tee -a "$RUNS"
     done
   done
 done
 
-python3 - "$RUNS" > "$OUT/summary.md" <<'PY'
-import statistics as st, sys
-rows = [l.split() for l in open(sys.argv[1]) if not l.startswith('#')]
-cell = {}
-for m, n, s, wall, filt, err, mb in rows:
-    cell.setdefault((m, int(n)), {})[int(s)] = (float(wall), None if filt == '-' else float(filt), float(err), int(mb))
-def med(xs): return st.median(xs) if xs else float('nan')
-def ratio(a, b, k):
-    both = sorted(set(cell.get(a, {})) & set(cell.get(b, {})))
-    return med([cell[a][s][k] / cell[b][s][k] for s in both])
-print("| particles | method | runs | process s (median) | filter s (median) | final error m (median) | peak MB (median) |")
-print("|---|---|---|---|---|---|---|")
-for n in sorted({n for _, n in cell}):
-    for m in ('segslam', 'segslam-nomatch', 'segslam-noseg', 'rbpf', 'mrpt'):
-        c = cell.get((m, n))
-        if not c: continue
-        v = list(c.values())
-        filt = [x[1] for x in v if x[1] is not None]
-        print(f"| {n} | {m} | {len(v)} | {med([x[0] for x in v]):.1f} | {med(filt):.2f} | {med([x[2] for x in v]):.2f} | {med([x[3] for x in v]):.0f} |" if filt else
-              f"| {n} | {m} | {len(v)} | {med([x[0] for x in v]):.1f} | - | {med([x[2] for x in v]):.2f} | {med([x[3] for x in v]):.0f} |")
-print()
-print("| particles | SegSLAM / our RBPF, filter time | SegSLAM / our RBPF, process time | SegSLAM / MRPT rbpf-slam, process time | no re-entries / our RBPF, filter time | one submap / our RBPF, filter time |")
-print("|---|---|---|---|---|---|")
-for n in sorted({n for _, n in cell}):
-    r = lambda a, b, k: f"{ratio((a, n), (b, n), k):.2f}" if (a, n) in cell and (b, n) in cell else "-"
-    print(f"| {n} | {r('segslam', 'rbpf', 1)} | {r('segslam', 'rbpf', 0)} | {r('segslam', 'mrpt', 0)} | {r('segslam-nomatch', 'rbpf', 1)} | {r('segslam-noseg', 'rbpf', 1)} |")
-print()
-print("(ratios: the median over the seeds of each seed's ratio)")
-PY
+python3 bench/segslam/csail_rbpf_time_summary.py "$RUNS" > "$OUT/summary.md"
 cat "$OUT/summary.md"
