@@ -42,7 +42,6 @@ struct Slam3dArgs {
   double max_search_radius = -1.0;  ///< --method segslam: reach cap (< 0: the default)
   double wide_reentry_radius = -1.0;  ///< --method segslam: wide search cap (0: off, < 0: the default)
   int wide_retry_updates = -1;  ///< --method segslam: wait after a failed wide search (< 0: the default)
-  int wide_max_particles = -1;  ///< --method segslam: the wide stage's largest filter (< 0: the default)
   bool search_per_particle = false;  ///< --method segslam: no search shared by a segment's copies
 };
 
@@ -197,7 +196,7 @@ int run_slam3d(const Slam3dArgs& a) {
   const Input in = read_input(a, options);
   if (a.method == "segslam") {
     run_segslam3d({a.input, input_name(a.input), a.out, a.segslam_config, a.map_samples, a.data_seed,
-                   a.max_search_radius, a.wide_reentry_radius, a.wide_retry_updates, a.wide_max_particles, a.search_per_particle}, in.log, options);
+                   a.max_search_radius, a.wide_reentry_radius, a.wide_retry_updates, a.search_per_particle}, in.log, options);
     if (in.world && a.input == "garage") slam::write_octomap(in.world->map, a.out + "/world.bt");
     return 0;
   }
@@ -255,10 +254,6 @@ Run add_slam3d_command(CLI::App& app) {
   app.add_option("--wide-retry-updates", args->wide_retry_updates,
                  "--method segslam: filter updates a candidate whose wide re-entry search found nothing waits "
                  "before that particle searches it widely again (0: at every attempt)")
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--wide-reentry-max-particles", args->wide_max_particles,
-                 "--method segslam: the wide re-entry stage runs only in filters of at most this many particles "
-                 "(default 0: at any count; e.g. 10 saves 8-14 % from 20 particles up and may lose a loop, README)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--search-per-particle", args->search_per_particle,
                "--method segslam: every particle searches its own copy of a candidate segment (default: the "

@@ -217,7 +217,6 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   if (run.max_search_radius >= 0) options.segslam.matching.max_search_radius = run.max_search_radius;
   if (run.wide_reentry_radius >= 0) options.extras.wide.max_radius = run.wide_reentry_radius;
   if (run.wide_retry_updates >= 0) options.extras.wide.retry_updates = run.wide_retry_updates;
-  if (run.wide_max_particles >= 0) options.extras.wide.max_particles = static_cast<std::size_t>(run.wide_max_particles);
   if (run.search_per_particle) options.segslam.matching.share_by_segment = false;
   if (run.map_samples >= 0) {
     options.segslam.offline.map_samples = run.map_samples;
@@ -269,7 +268,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
                        {"peaks", wide.peaks}, {"separation_m", wide.separation},
                        {"angle_separation_rad", wide.angle_separation},
                        {"confirm_distance_m", wide.confirm_distance}, {"confirm_angle_rad", wide.confirm_angle},
-                       {"retry_updates", wide.retry_updates}, {"max_particles", wide.max_particles}};
+                       {"retry_updates", wide.retry_updates}};
   j["map_entropy_nats_m3"] = best_map.best.entropy;
   j["chain_entropy_nats_m3"] = best_map.chain_entropy;  // 0 with offline.particle_chain off
   j["map_is_particle_chain"] = best_map.best.chain;

@@ -25,8 +25,6 @@ struct SegSlam3dRun {
   double wide_reentry_radius = -1.0;
   /// Updates a candidate whose wide search found nothing waits before the next (wide_reentry.hpp); < 0: the default.
   int wide_retry_updates = -1;
-  /// The wide stage runs in filters of at most this many particles (0: any); < 0: the default.
-  int wide_max_particles = -1;
   /// Every particle searches its own copy of a segment (MatchingOptions::share_by_segment off).
   bool search_per_particle = false;
 };

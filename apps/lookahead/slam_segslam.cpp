@@ -57,7 +57,6 @@ nlohmann::json statistics_json(const SegSlam& filter) {
   j["segmentations"] = st.segmentations;
   j["matches"] = st.matches;
   j["match_attempts"] = st.match_attempts;
-  j["confirmed_matches"] = st.confirmed;  // offered with MatchingOptions::confirmed_boost
   j["pruned_submaps"] = st.pruned;
   j["live_submaps"] = filter.segmap().live_count();
   j["locked_submaps"] = st.locked;

@@ -62,7 +62,7 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       frontiers_(options.frontiers),
       blacklist_(options.blacklist),
       replan_failures_(options.blacklist),
-      stuck_clock_({options.stuck_time, options.progress_along_path, options.detour_progress}),
+      stuck_clock_({options.stuck_time, false, options.detour_progress}),
       strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)),
       // A spot is the same target within 1 m (the goal shifts as the map grows, as kSameGoalRadius);
       // strikes never make an entry permanent: the map keeps growing around it.
@@ -247,7 +247,7 @@ void Mission::decide() {
   // A blocked path is no reason to change the target: only a target that stopped being
   // worth it is. Re-choosing on every blocked path swaps between far frontiers.
   if (path_blocked_ && goal_ && goal_still_useful()) {
-    if (replan_current_goal() || squeeze_to_goal()) return;
+    if (replan_current_goal()) return;
     // No way to the goal any more. The map often lets it back a moment later, and a new
     // selection resets the stuck clock, so two such goals can take turns for good
     // (kth_50055641 nearest swapped between two every 25 s for the last 1000 s of its
@@ -314,7 +314,6 @@ SelectionInputs Mission::selection_inputs() {
                      options_.laser.max_range, options_.max_goal_attempts, options_.planner};
   in.planner.seed = static_cast<std::uint32_t>(options_.planner.seed + static_cast<std::uint32_t>(stats_.plans));
   in.robot_radius = options_.robot.radius;
-  in.gain_line_of_sight = options_.gain_line_of_sight;
   if (lookahead_) {
     in.predicted = &lookahead_->predicted();
     in.skip = skip_rule();
@@ -371,9 +370,6 @@ void Mission::select_new_target() {
     // one). Frontiers that are only blacklisted for a while are no trap: the robot looks
     // around until an entry expires (each spot is retried at most max_strikes times).
     if (s.waiting_on_blacklist) {
-      // Frontiers behind doors the margin closes may be waiting meanwhile (on kth_50015848
-      // the robot looked around for 70-110 s at a time).
-      if (options_.squeeze_when_blocked && squeeze()) return;
       turned_ = 0.0;
       return;
     }

@@ -23,15 +23,13 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v.section("mission");
   v("strategy", o.strategy, "target selection: nearest | utility | predictive | predictive-utility");
   v("utility_lambda", o.utility_lambda, "utility = gain [m^2] - lambda * cost [m]");
-  v("gain_line_of_sight", o.gain_line_of_sight, "gain: unknown area in line of sight (false: the whole disc)");
   v("pose_source", o.pose_source, "slam (RBPF in the loop) | truth (map at the true pose)");
   v("seed", o.seed, "seeds the sensor, odometry, SLAM (filter.seed) and planner");
   v("time_limit", o.time_limit, "simulated seconds, > 0");
   v("coverage_goal", o.coverage_goal, "stop at this share of the reachable free area, (0, 1]");
   v("goal_check_period", o.goal_check_period, "the current goal is re-examined this often [s]");
   v("stuck_time", o.stuck_time, "no progress this long blacklists the goal [s]");
-  v("progress_along_path", o.progress_along_path, "a shorter path left to the goal is progress too");
-  v("detour_progress", o.detour_progress, "on a detour (path > 10 m and > 2x the distance) too");
+  v("detour_progress", o.detour_progress, "on a detour (path > 10 m and > 2x the distance) a shorter path left is progress");
   v("max_goal_attempts", o.max_goal_attempts, "candidates tried per selection before trapped");
   v("metrics_period", o.metrics_period, "coverage is sampled this often [s]");
   v("frame_period", o.frame_period, "animation frame every [s]; 0 = no animation");
@@ -39,9 +37,6 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v("free_threshold", o.free_threshold, "a map cell below this occupancy is explored, (0, 0.5)");
   v("safety_margin", o.safety_margin, "planning clearance beyond the robot radius [m]");
   v("stop_distance", o.stop_distance, "reactive stop for laser points this close ahead [m]");
-  v("backtrack", o.backtrack, "no frontier reachable: retrace the robot's trail out of its place");
-  v("squeeze", o.squeeze, "last resort before trapped: plan without the safety margin");
-  v("squeeze_when_blocked", o.squeeze_when_blocked, "also squeeze to a goal the margin closed on the way");
   v.section("robot");
   v("radius", o.robot.radius, "disc radius [m], > 0");
   v("max_speed", o.robot.max_speed, "[m/s], > 0");
@@ -119,47 +114,7 @@ void visit_sections(MissionOptions& o, V&& v) {
   visit_planning_sections(o, v);
 }
 
-std::optional<planner::PlannerAlgorithm> algorithm_from_name(const std::string& name) {
-  for (const auto a : {planner::PlannerAlgorithm::kRrtStar, planner::PlannerAlgorithm::kPrmStar,
-                       planner::PlannerAlgorithm::kInformedRrtStar}) {
-    if (name == planner::to_string(a)) return a;
-  }
-  return std::nullopt;
-}
-
 using slam::config::fail_at;
-
-// The shared section loader and dumper, plus this library's two enums.
-class Loader : public slam::config::SectionLoader {
- public:
-  using SectionLoader::SectionLoader;
-  using SectionLoader::operator();
-  void operator()(const char* key, PoseSource& field, const char*) {
-    const YAML::Node n = node(key);
-    if (!n) return;
-    const auto v = pose_source_from_name(n.IsScalar() ? n.Scalar() : "");
-    if (!v) fail_at(source(), n, section_name() + "." + key, "bad value: expected slam | truth");
-    field = *v;
-  }
-  void operator()(const char* key, planner::PlannerAlgorithm& field, const char*) {
-    const YAML::Node n = node(key);
-    if (!n) return;
-    const auto v = algorithm_from_name(n.IsScalar() ? n.Scalar() : "");
-    if (!v) {
-      fail_at(source(), n, section_name() + "." + key, "bad value: expected rrt_star | prm_star | informed_rrt_star");
-    }
-    field = *v;
-  }
-};
-
-class Dumper : public slam::config::SectionDumper {
- public:
-  using SectionDumper::operator();
-  void operator()(const char* key, PoseSource field, const char* doc) { line(key, pose_source_name(field), doc); }
-  void operator()(const char* key, planner::PlannerAlgorithm field, const char* doc) {
-    line(key, planner::to_string(field), doc);
-  }
-};
 
 // The slam section goes to the SLAM library's loader as text of its own, padded so that its
 // errors carry this file's line numbers.
@@ -179,14 +134,10 @@ slam::RbpfOptions parse_slam_section(const std::string& text, const YAML::Node& 
 
 }  // namespace
 
-const char* pose_source_name(PoseSource source) {
-  return source == PoseSource::kSlam ? "slam" : "truth";
-}
+const char* pose_source_name(PoseSource source) { return slam::config::choice_name(source); }
 
 std::optional<PoseSource> pose_source_from_name(const std::string& name) {
-  if (name == "slam") return PoseSource::kSlam;
-  if (name == "truth") return PoseSource::kTruth;
-  return std::nullopt;
+  return slam::config::choice_from_name<PoseSource>(name);
 }
 
 std::string yaml_block_text(const std::string& text, int line, int column) {
@@ -215,7 +166,7 @@ MissionOptions parse_mission_options(const std::string& yaml, const std::string&
   const YAML::Node root = slam::config::parse_sections(yaml, source);
   MissionOptions o = base;
   if (root.IsNull()) return o;
-  Loader loader(root, source);
+  slam::config::SectionLoader loader(root, source);
   visit_sections(o, loader);
   loader.reject_unknown({"slam"});  // read by the SLAM library's own loader below
   if (const YAML::Node s = root["slam"]) o.slam = parse_slam_section(yaml, s, source, o.slam);
@@ -234,7 +185,7 @@ MissionOptions load_mission_options(const std::string& path, const MissionOption
 
 std::string dump_mission_options(const MissionOptions& options) {
   MissionOptions copy = options;
-  Dumper d;
+  slam::config::SectionDumper d;
   visit_sections(copy, d);
   std::string slam_text = slam::dump_rbpf_options(options.slam), indented;
   std::istringstream in(slam_text);

@@ -26,7 +26,6 @@ constexpr double kBacktrackRotateAngle = 0.3;
 }  // namespace
 
 bool Mission::backtrack() {
-  if (!options_.backtrack) return false;
   const Selection s = select_escape(selection_inputs(), crumbs_);
   if (s.outcome != SelectionOutcome::kPlanned) return false;
   ++stats_.backtracks;
@@ -43,7 +42,7 @@ bool Mission::last_resort() {
   // squeeze the stuck clock gives up (a jamb it cannot pass) is followed by a backtrack,
   // so the next squeeze starts elsewhere and aims at another frontier (the failed goal is
   // blacklisted). Only here, so a mission that never runs out of tries is unchanged.
-  if (!options_.squeeze || last_resorts_ >= kLastResortTries) return false;
+  if (last_resorts_ >= kLastResortTries) return false;
   ++last_resorts_;
   const bool squeeze_first = last_resorts_ % 2 == 1;
   return squeeze_first ? (squeeze() || backtrack()) : (backtrack() || squeeze());
@@ -80,7 +79,6 @@ planner::Costmap Mission::body_costmap() const {
 }
 
 bool Mission::squeeze() {
-  if (!options_.squeeze) return false;
   const planner::Costmap tight = body_costmap();
   SelectionInputs in = selection_inputs();
   in.costmap = &tight;
@@ -94,32 +92,6 @@ bool Mission::squeeze() {
   squeezing_ = true;
   tight_ = true;
   follow(s, close_tracking());
-  return true;
-}
-
-bool Mission::squeeze_to_goal() {
-  // The margin closed the way to a goal still worth it: seen from afar, a door's jambs were
-  // not mapped yet; near it they are, and the door is narrower than body + margin. Choosing
-  // another goal lets goals behind such doors take turns for hours (kth_50015848 nearest:
-  // the last 2100 s of its 4 h added no coverage, 129 goals given up by the stuck clock).
-  // If the body fits, the robot goes through, tracked closely and guarded by the swept-disc
-  // stop; the stuck clock keeps running, so a jamb it cannot pass costs it the goal.
-  if (!options_.squeeze || !options_.squeeze_when_blocked || !goal_ || backtracking_) return false;
-  // A goal the margin now covers itself (a frontier goal beside a wall just mapped) is no
-  // closed door: the frontier gets a new goal at the next selection.
-  if (!costmap_.is_free(*goal_)) return false;
-  const planner::Costmap tight = body_costmap();
-  SelectionInputs in = selection_inputs();
-  in.costmap = &tight;
-  const Selection s = replan_to_goal(in, *goal_);
-  count(s);
-  if (s.outcome != SelectionOutcome::kPlanned) return false;
-  ++stats_.squeezes;
-  ++stats_.blocked_squeezes;
-  spdlog::debug("t {:.1f}: the margin closed the way: squeeze to ({:.2f}, {:.2f})", time_, goal_->x, goal_->y);
-  squeezing_ = true;
-  tight_ = true;
-  follower_ = std::make_unique<planner::PathFollower>(s.path, close_tracking());
   return true;
 }
 

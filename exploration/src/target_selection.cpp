@@ -100,7 +100,7 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
                              const TravelCost& cost, bool& any_reachable, bool& any_waiting) {
   const planner::Costmap& cm = *in.costmap;
   std::vector<Candidate> out;
-  const auto gain = in.gain_line_of_sight ? visible_information_gain : information_gain;
+  const auto& gain = visible_information_gain;
   any_reachable = false;
   any_waiting = false;
   for (const FrontierCluster& f : clusters) {

@@ -6,13 +6,8 @@
 namespace lookahead::planner {
 
 const char* to_string(PlannerAlgorithm algorithm) {
-  switch (algorithm) {
-    case PlannerAlgorithm::kRrtStar:
-      return "rrt_star";
-    case PlannerAlgorithm::kPrmStar:
-      return "prm_star";
-    case PlannerAlgorithm::kInformedRrtStar:
-      return "informed_rrt_star";
+  for (const auto& [a, name] : choice_names(algorithm)) {
+    if (a == algorithm) return name;
   }
   return "unknown";
 }

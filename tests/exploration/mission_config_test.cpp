@@ -75,10 +75,10 @@ TEST(MissionConfig, BadEnumValueNamesTheValue) {
   EXPECT_EQ(e.line(), 3u);
   EXPECT_EQ(e.field(), "planner.algorithm");
   EXPECT_EQ(e.value(), "rrt");
-  e = parse_error("mission:\n  strategy: utility\n  gain_line_of_sight: visible\n");
+  e = parse_error("slam:\n  proposal:\n    kind: standard\n");
   EXPECT_EQ(e.line(), 3u);
-  EXPECT_EQ(e.field(), "mission.gain_line_of_sight");
-  EXPECT_EQ(e.value(), "visible");
+  EXPECT_EQ(e.field(), "proposal.kind");
+  EXPECT_EQ(e.value(), "standard");
   e = parse_error("mission:\n  detour_progress: sometimes\n");
   EXPECT_EQ(e.line(), 2u);
   EXPECT_EQ(e.field(), "mission.detour_progress");
@@ -130,16 +130,24 @@ TEST(MissionConfig, ShippedDefaultsMatchTheCode) {
   EXPECT_NO_THROW(load_mission_options(path));
 }
 
-// config/mission/standard_proposal.yaml (P-SLAM reproduction 5 with the paper's RBPF) changes
-// only the scan matcher's hit ratio, to one no match reaches: every particle samples the motion
-// model. Everything else is the defaults.
-TEST(MissionConfig, StandardProposalFileOnlyTurnsTheScanMatchOff) {
-  const std::string path = std::string(LOOKAHEAD_SOURCE_DIR) + "/config/mission/standard_proposal.yaml";
-  const MissionOptions o = load_mission_options(path);
-  EXPECT_GT(o.slam.matcher.min_hit_ratio, 1.0);
+// The P-SLAM paper's RBPF (Chang et al. 2007: "the proposal distribution used in the RBPF is
+// the action model as in FastSLAM") is one named choice in the slam section; nothing else moves.
+TEST(MissionConfig, MotionModelProposalChangesOnlyTheProposal) {
+  const MissionOptions o = parse_mission_options("slam:\n  proposal:\n    kind: motion_model\n", "m.yaml");
+  EXPECT_EQ(o.slam.proposal.kind, slam::ProposalKind::kMotionModel);
   MissionOptions expected = MissionOptions::defaults();
-  expected.slam.matcher.min_hit_ratio = o.slam.matcher.min_hit_ratio;
+  expected.slam.proposal.kind = slam::ProposalKind::kMotionModel;
   EXPECT_EQ(dump_mission_options(o), dump_mission_options(expected));
+  EXPECT_NE(dump_mission_options(o), dump_mission_options(MissionOptions::defaults()));
+}
+
+// The escape switches of adopted behaviours are gone: a file that sets one is told so.
+TEST(MissionConfig, RetiredKeysAreUnknown) {
+  for (const char* key : {"squeeze_when_blocked", "progress_along_path", "gain_line_of_sight", "backtrack", "squeeze"}) {
+    const slam::ParseError e = parse_error(std::string("mission:\n  ") + key + ": true\n");
+    EXPECT_EQ(e.field(), std::string("mission.") + key);
+    EXPECT_EQ(e.line(), 2u);
+  }
 }
 
 // config/robot/pioneer3dx.yaml is the default robot: loading it changes nothing.

@@ -104,33 +104,6 @@ TEST(Mission, DoorOnlyTheBodyFitsIsPassedAsALastResort) {
   }
 }
 
-// The same room and hall, the robot starting 2 m from a 0.35 m door it sees from the start:
-// at the first selection the door cells read free and the margin leaves a way through; on
-// the way the jambs are mapped and the margin closes it. The goal beyond the door is still
-// worth it: the robot squeezes through at once instead of giving it up.
-TEST(Mission, DoorTheMarginClosesOnTheWayIsSqueezedThrough) {
-  World world(300, 100, 0.05, {0, 0}, World::kOccupied);
-  world.fill_rect({0.5, 0.5}, {4.0, 4.5}, World::kFree);    // the robot's room
-  world.fill_rect({4.0, 2.30}, {4.6, 2.65}, World::kFree);  // the door, 0.6 m deep
-  world.fill_rect({4.6, 0.5}, {14.5, 4.5}, World::kFree);   // the hall
-  for (const bool when_blocked : {false, true}) {
-    MissionOptions o = quick(PoseSource::kTruth);
-    o.robot.radius = 0.1;
-    o.coverage_goal = 0.99;
-    o.squeeze_when_blocked = when_blocked;
-    o.harmonize();
-    Mission m(world, {2.0, 2.5, 0.0}, o);
-    const MissionStatus s = m.run();
-    EXPECT_EQ(m.statistics().collisions, 0) << "when blocked " << when_blocked;
-    EXPECT_EQ(s, MissionStatus::kDone) << to_string(s) << ", when blocked " << when_blocked;
-    if (!when_blocked) {
-      EXPECT_EQ(m.statistics().blocked_squeezes, 0);
-      continue;
-    }
-    EXPECT_GE(m.statistics().blocked_squeezes, 1);
-  }
-}
-
 TEST(Mission, RejectsAStartInAWall) {
   const GeneratedWorld w = small_office();
   EXPECT_THROW(Mission(w.world, {0.0, 0.0, 0.0}, quick(PoseSource::kTruth)), std::invalid_argument);

@@ -138,16 +138,6 @@ TEST_F(Slam3dCli, NegativeWideRetryUpdatesIsRejectedWithItsValue) {
   expect_segslam_rejects("--wide-retry-updates", "-4");
 }
 
-TEST_F(Slam3dCli, WideReentryMaxParticlesReachesRunJsonAndRejectsNegatives) {
-  expect_segslam_rejects("--wide-reentry-max-particles", "-2");
-  const Result r = run("garage --method segslam --max-sweeps 3 --particles 2 --wide-reentry-max-particles 40 --out " +
-                           dir.string(),
-                       dir / "log.txt");
-  ASSERT_EQ(r.code, 0) << r.output;
-  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "run.json"));
-  EXPECT_EQ(j["wide_reentry"]["max_particles"].get<int>(), 40);
-}
-
 TEST_F(Slam3dCli, UnknownInputIsAnError) {
   const Result r = run("/nonexistent/place --out " + dir.string(), dir / "log.txt");
   EXPECT_NE(r.code, 0);

@@ -9,6 +9,7 @@
 #include "lookahead/predictor/log_prediction_config.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "../slam/temp_file.hpp"
 
 namespace lookahead::predictor {
 namespace {
@@ -24,9 +25,11 @@ TEST(PslamConfig, ShippedDefaultsMatchTheCode) {
   EXPECT_EQ(dump_pslam_options(shipped), dump_pslam_options({}));
 }
 
-// The live-robot file of the prediction-cost benchmark changes the waiting only.
-TEST(PslamConfig, LiveFileOnlyStopsWaiting) {
-  const PslamOptions live = load_pslam_options(std::string(LOOKAHEAD_SOURCE_DIR) + "/config/slam/pslam_live.yaml");
+// A live robot never waits for a prediction: one key changes the waiting only.
+TEST(PslamConfig, LiveSettingOnlyStopsWaiting) {
+  const slam::test::TempPath file(".yaml");
+  file.write("log_targets:\n  wait_for_predictions: false\n");
+  const PslamOptions live = load_pslam_options(file.str());
   EXPECT_FALSE(live.prediction.targets.wait_for_predictions);
   PslamOptions expected;
   expected.prediction.targets.wait_for_predictions = false;

@@ -109,6 +109,27 @@ TEST(Rbpf, SameSeedSameResultWhateverTheThreadCount) {
   EXPECT_EQ(one.statistics().neff, two.statistics().neff);
 }
 
+// The motion-model proposal never runs the scan matcher (no match failures to count) and
+// still corrects the drift, less tightly than the scan-matching proposal; the two differ.
+TEST(Rbpf, MotionModelProposalSkipsTheScanMatcher) {
+  const auto data = drive();
+  RbpfOptions o = small(1);
+  o.particles = 60;
+  o.proposal.kind = ProposalKind::kMotionModel;
+  Rbpf motion(o), matched(small(1));
+  for (const auto& d : data) {
+    motion.add_scan(d.second);
+    matched.add_scan(d.second);
+  }
+  EXPECT_EQ(motion.statistics().match_failures, 0u);
+  EXPECT_GT(motion.statistics().updates, 50u);
+  const Pose2 truth = data.back().first, odom = data.back().second.odometry;
+  const Pose2 end = motion.best_trajectory().back();
+  EXPECT_LT(std::hypot(end.x - truth.x, end.y - truth.y), 0.5 * std::hypot(odom.x - truth.x, odom.y - truth.y));
+  const Pose2 other = matched.best_trajectory().back();
+  EXPECT_NE(end.x, other.x);
+}
+
 TEST(Rbpf, WaitsForTheMotionThreshold) {
   Rbpf filter(small(1));
   const auto world = test::room_world();

@@ -44,6 +44,42 @@ TEST(SlamConfig, BadValueNamesTheValue) {
   }
 }
 
+// proposal.kind is a named choice: read and dumped by name, and a wrong name gets an error
+// that lists the allowed ones.
+TEST(SlamConfig, ProposalKindIsANamedChoice) {
+  const RbpfOptions o = parse_rbpf_options("proposal:\n  kind: motion_model\n", "my.yaml");
+  EXPECT_EQ(o.proposal.kind, ProposalKind::kMotionModel);
+  EXPECT_EQ(RbpfOptions{}.proposal.kind, ProposalKind::kScanMatch);
+  EXPECT_NE(dump_rbpf_options(o).find("  kind: motion_model  #"), std::string::npos);
+  EXPECT_NE(dump_rbpf_options({}).find("  kind: scan_match  #"), std::string::npos);
+  EXPECT_EQ(parse_rbpf_options(dump_rbpf_options(o), "dump").proposal.kind, ProposalKind::kMotionModel);
+  try {
+    parse_rbpf_options("proposal:\n  kernel_linear: 0.025\n  kind: standard\n", "my.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), "my.yaml");
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "proposal.kind");
+    EXPECT_EQ(e.value(), "standard");
+    EXPECT_NE(std::string(e.what()).find("scan_match | motion_model"), std::string::npos) << e.what();
+  }
+  for (const char* bad : {"proposal:\n  kind: [scan_match]\n", "proposal:\n  kind: 1\n", "proposal:\n  kind:\n"}) {
+    EXPECT_THROW(parse_rbpf_options(bad, "my.yaml"), ParseError) << bad;
+  }
+}
+
+// A hit ratio above 1 is no way to switch the scan matcher off: proposal.kind is.
+TEST(SlamConfig, HitRatioAboveOneIsRejected) {
+  try {
+    parse_rbpf_options("matcher:\n  min_hit_ratio: 1.1\n", "my.yaml");
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.field(), "matcher.min_hit_ratio");
+    EXPECT_EQ(e.value(), "1.1");
+  }
+}
+
 // The components validate their own options; the error still points at the key's line.
 TEST(SlamConfig, ImpossibleValueNamesItsLineAndValue) {
   try {

@@ -41,9 +41,6 @@ void visit_sections(SegSlamOptions& o, V&& v) {
   v("translation_sigma", m.translation_sigma, "eq. 18 sigma of the correction [m]");
   v("null_error", m.null_error, "the null match weighs as a match of this error [m]");
   v("min_inlier_ratio", m.min_inlier_ratio, "matches with fewer inliers are discarded");
-  v("confirmed_boost", m.confirmed_boost, "2D: eq. 18 weight times this for a match the last attempt predicted (1 = off)");
-  v("confirm_distance", m.confirm_distance, "... predicted within this [m]");
-  v("confirm_angle", m.confirm_angle, "... and this [rad]");
   v("use_localization_filter", m.use_localization_filter, "match by a localisation filter (eq. 19), not ICP (eq. 18)");
   v("localization_particles", m.localization_particles, "particles of the localisation filter");
   v("share_by_segment", m.share_by_segment, "copies of one segment share the searches that find nothing");

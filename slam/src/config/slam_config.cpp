@@ -55,9 +55,11 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v("angular_step", o.matcher.angular_step, "first step in theta [rad]");
   v("refinements", o.matcher.refinements, "step halvings");
   v("max_iterations", o.matcher.max_iterations, "cap on accepted moves");
-  v("min_hit_ratio", o.matcher.min_hit_ratio, "match fails below this share of end points on walls");
+  v("min_hit_ratio", o.matcher.min_hit_ratio, "match fails below this share of end points on walls, [0, 1]");
   v("max_correction", o.matcher.max_correction, "match fails farther than this from odometry [m]");
   v.section("proposal");
+  v("kind", o.proposal.kind,
+    "scan_match (Grisetti 2007 improved proposal) | motion_model (odometry, weighted by the scan)");
   v("kernel_linear", o.proposal.kernel_linear, "spacing of the 27 kernel points in x, y [m]");
   v("kernel_angular", o.proposal.kernel_angular, "spacing in theta [rad]");
   v("min_sigma_fraction", o.proposal.min_sigma_fraction, "floor of the fitted std, fraction of spacing");

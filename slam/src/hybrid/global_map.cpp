@@ -31,11 +31,9 @@ LocalToGlobal local_to_global(const Pose2& origin, const Eigen::VectorXd& local)
 }
 
 GlobalMap::GlobalMap(const FusionOptions& options, const Pose2& start)
-    : options_(options), mean_(to_vector(start)), covariance_(Eigen::MatrixXd::Zero(3, 3)), first_origin_(start), joining_(start) {}
+    : options_(options), mean_(to_vector(start)), covariance_(Eigen::MatrixXd::Zero(3, 3)), joining_(start) {}
 
 Pose2 GlobalMap::origin() const { return to_pose(mean_.head<3>()); }
-
-Pose2 GlobalMap::linearisation_origin() const { return options_.first_estimate_jacobians ? first_origin_ : origin(); }
 
 Eigen::Vector2d GlobalMap::feature(std::size_t k) const {
   return mean_.segment<2>(3 + 2 * static_cast<Eigen::Index>(k));
@@ -56,19 +54,9 @@ PoseGaussian GlobalMap::compose(const PoseGaussian& local) const {
 
 // Sec. 4: x+ = [x-; g(v-, x_L)] with
 // P+ = [P-, P-_{:v} dg_v^T; dg_v P-_{v:}, dg_v P_vv dg_v^T + dg_z P_L dg_z^T].
-// Option `first_estimate_jacobians` (off; beyond the paper, after the first-estimates
-// Jacobian of Huang, Mourikis & Roumeliotis, ISER 2008): dg_v at v-'s first estimate, the
-// value the previous fusion augmented it with, instead of its value after that fusion's
-// zero-noise constraints moved it. v- sits in two linearised relations (end of the previous
-// local map, origin of this one), and two linearisation points can give the EKF heading
-// information no measurement gave: in the failed trials of the (0.7, 0.02) study the global
-// heading std fell from 0.026 to 0.008 rad around the loop while the error stayed at
-// 0.05-0.07 rad. It rescued 6 of those 14 failures but broke others; over Table 1 it was
-// no better (HYBRID 86/88/88/84 % against 92/86/89/86 %, README), so it is off. With
-// `relinearise` (the default) the augmentation below only serves the association test.
+// With `relinearise` (the default) the augmentation below only serves the association test.
 void GlobalMap::augment(const GaussianMap& local) {
-  LocalToGlobal g = local_to_global(origin(), local.mean);
-  g.d_origin = local_to_global(linearisation_origin(), local.mean).d_origin;
+  const LocalToGlobal g = local_to_global(origin(), local.mean);
   const Eigen::Index old_n = mean_.size(), add = g.value.size();
   Eigen::VectorXd x(old_n + add);
   x << mean_, g.value;
@@ -86,9 +74,6 @@ void GlobalMap::augment(const GaussianMap& local) {
 FusionReport GlobalMap::fuse(const GaussianMap& local) {
   const std::size_t old_features = features();
   augment(local);
-  // The new vehicle pose as augmented, before the fusion below corrects it: the next
-  // local map's origin, linearised here next time.
-  first_origin_ = to_pose(mean_.segment<3>(3 + 2 * static_cast<Eigen::Index>(old_features)));
   FusionReport report;
   report.local_features = static_cast<int>(local.features());
   // After augmentation the state is [v-, old features, v_new, new features].

@@ -46,7 +46,6 @@ void visit_sections(HybridConfig& c, V&& v) {
   v("jcbb_confidence", f.fusion.jcbb_confidence, "joint compatibility test level");
   v("jcbb_max_nodes", f.fusion.jcbb_max_nodes, "cap on the JCBB search");
   v("association_sigma", f.fusion.association_sigma, "std added to pair differences in the association test [m]");
-  v("first_estimate_jacobians", f.fusion.first_estimate_jacobians, "linearise g at the origin's first estimate (tried; README)");
   v("relinearise", f.fusion.relinearise, "re-solve all local maps by Gauss-Newton at each fusion");
   v("relinearise_iterations", f.fusion.relinearise_iterations, "Gauss-Newton steps per fusion, at most");
   SimulationOptions& s = c.simulation;

@@ -9,20 +9,21 @@ namespace lookahead::slam {
 bool draw_particle(const ParticleStepModels& m, const OccupancyGrid& map, Pose2& pose, double& log_weight,
                    const Pose2& u, const PreparedScan& prepared, bool warm, std::mt19937_64& rng) {
   const Pose2 predicted = pose.compose(u);
+  const bool match_scan = warm && m.options.proposal.kind == ProposalKind::kScanMatch;
   MatchResult match;
-  if (warm) match = m.matcher.match(map, predicted, prepared);
+  if (match_scan) match = m.matcher.match(map, predicted, prepared);
   bool failed = false;
-  if (warm && match.ok) {
+  if (match_scan && match.ok) {
     const ProposalDraw d = draw_improved_proposal(map, pose, u, match.pose, prepared, m.likelihood,
                                                   m.motion, m.options.proposal, rng);
     pose = d.pose;
     log_weight += m.options.weight_exponent * d.log_eta;
   } else {
-    // No usable match: sample the odometry model and weight by the observation (the
-    // standard proposal), as Grisetti et al. do when scan matching fails.
+    // The motion-model proposal, chosen or where scan matching fails (as Grisetti et al. do):
+    // sample the odometry model and weight by the observation.
     pose = m.motion.sample(pose, u, rng);
     if (warm) log_weight += m.options.weight_exponent * m.likelihood.log_likelihood(map, pose, prepared);
-    failed = warm;
+    failed = match_scan;
   }
   return failed;
 }

@@ -24,6 +24,9 @@ void validate(const RbpfOptions& o) {
   if (!(o.weight_exponent > 0 && o.weight_exponent <= 1)) {
     throw std::invalid_argument("weight_exponent in (0, 1]");
   }
+  if (!(o.matcher.min_hit_ratio >= 0 && o.matcher.min_hit_ratio <= 1)) {
+    throw std::invalid_argument("matcher.min_hit_ratio in [0, 1] (proposal.kind: motion_model skips the matcher)");
+  }
   const PredictionOptions& pr = o.prediction;
   if (!(pr.hit_ratio_threshold >= 0 && pr.hit_ratio_threshold <= 1)) {
     throw std::invalid_argument("prediction.hit_ratio_threshold in [0, 1]");

@@ -9,10 +9,6 @@ MatchResult ScanMatcher::match(const OccupancyGrid& grid, const Pose2& start,
                                const PreparedScan& scan) const {
   MatchResult r;
   r.pose = start;
-  // No hit ratio above 1 exists: the matcher is switched off (the standard proposal, as in
-  // config/segslam/intel_loop_rbpf.yaml), and a search would only be thrown away (about 15 %
-  // of a filter step there). A failed match's pose and likelihood are never used.
-  if (options_.min_hit_ratio > 1.0) return r;
   r.log_likelihood = model_.log_likelihood(grid, start, scan);
   r.evaluations = 1;
   double lin = options_.linear_step;

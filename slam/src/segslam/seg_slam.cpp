@@ -247,10 +247,7 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const std::function<
   // (hysteresis, sec. 4.5.1).
   const int period = options_.matching.period_updates;
   const bool periodic = stats_.updates % static_cast<std::size_t>(period) == 0 && p.submap_updates >= period;
-  if (segment || periodic) {
-    matches = match_candidates(p, window(), ids, rng);
-    weigh_confirmed(p, ids, matches);
-  }
+  if (segment || periodic) matches = match_candidates(p, window(), ids, rng);
   std::vector<double> weights;
   for (const WindowMatch& m : matches) weights.push_back(m.weight);
   const ChoiceDraw draw = draw_submap_choice(segment, weights, options_.matching, rng);  // eq. 3
@@ -259,13 +256,11 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const std::function<
   GridSubmap next;
   next.interval = {last_update_, last_update_, at.timestamp, at.timestamp};
   if (draw.choice == SubmapChoice::kNew) {
-    for (PendingMatch& m : p.pending) m = carried_into(m, p.pose);  // the fresh frame's origin is here
     next.map = prototype_grid_;  // a fresh frame, the particle at its origin
     insert_scan(next.map, Pose2{}, at, rbpf_.insert);
   } else {
     t.candidate = ids[draw.match];
     t.weight = matches[draw.match].weight;
-    p.pending.clear();  // now in the candidate's frame
     next.entry = matches[draw.match].pose;  // the pose in the candidate's frame
     next.parent = t.candidate;
     next.map = segmap_.at(t.candidate).map;  // copy-on-write: shares every tile until written
@@ -284,23 +279,6 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const std::function<
   p.submap_updates = 0;
   p.motion_error = 0.0;
   return t;
-}
-
-void SegSlam::weigh_confirmed(SegParticle& p, const std::vector<std::size_t>& ids, std::vector<WindowMatch>& matches) {
-  const MatchingOptions& o = options_.matching;
-  std::vector<PendingMatch> found;
-  std::size_t confirmed = 0;
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    const std::size_t segment = segmap_.first_copy(ids[i]);
-    if (confirms(p.pending, segment, matches[i].pose, p.pose, o.confirm_distance, o.confirm_angle)) {
-      matches[i].weight = std::min(1.0, matches[i].weight * o.confirmed_boost);
-      ++confirmed;
-    }
-    found.push_back(pending_match(segment, matches[i].pose, p.pose));
-  }
-  p.pending = std::move(found);
-  const std::lock_guard<std::mutex> lock(cache_mutex_);
-  stats_.confirmed += confirmed;
 }
 
 void SegSlam::update(std::size_t k) {

@@ -301,8 +301,6 @@ double SegSlam3d::error_since(std::size_t candidate) const {
 std::optional<MatchingOptions> SegSlam3d::wide_options(double chain_error) const {
   // Deviation (wide_reentry.hpp): beyond the capped search, a second stage sized by eq. 18's
   // sigma_tau, accepted only when one pose of it passes the tests (eq. 19's covariance term).
-  const std::size_t most = options_.extras.wide.max_particles;
-  if (most > 0 && particles_.size() > most) return std::nullopt;
   return wide_reach(options_.segslam.matching, chain_error, options_.segslam.matching.max_search_radius, options_.extras.wide);
 }
 

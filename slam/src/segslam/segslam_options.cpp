@@ -33,8 +33,6 @@ void validate(const SegSlamOptions& o) {
   require(m.icp_iterations >= 1 && m.icp_max_distance > 0, "matching.icp_iterations >= 1, icp_max_distance > 0");
   require(m.icp_sigma > 0 && m.translation_sigma > 0 && m.null_error >= 0, "matching sigmas > 0, null_error >= 0");
   require(m.min_inlier_ratio >= 0 && m.min_inlier_ratio <= 1, "matching.min_inlier_ratio in 0..1");
-  require(m.confirmed_boost >= 1 && m.confirm_distance > 0 && m.confirm_angle > 0,
-          "matching.confirmed_boost >= 1, confirm_distance > 0, confirm_angle > 0");
   require(m.localization_particles >= 10, "matching.localization_particles >= 10");
   const LockingOptions& l = o.locking;
   require(l.lock_max_error >= 0 && l.merge_max_error >= 0, "locking.*_max_error >= 0");

@@ -21,8 +21,8 @@ using CountsAsKnown = std::function<bool(slam::CellIndex)>;
 double visible_information_gain(const slam::OccupancyGrid& grid, double x, double y, double range,
                                 const CountsAsKnown& counts_as_known = nullptr);
 
-/// Unknown area [m^2] within `range` of (x, y), walls ignored (the disc approximation; the
-/// studies measured before line of sight use it: `mission.gain_line_of_sight: false`).
+/// Unknown area [m^2] within `range` of (x, y), walls ignored (the disc approximation: an
+/// upper bound of the gain above, for tests and benchmarks).
 double information_gain(const slam::OccupancyGrid& grid, double x, double y, double range,
                         const CountsAsKnown& counts_as_known = nullptr);
 

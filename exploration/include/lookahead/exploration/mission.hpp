@@ -48,7 +48,6 @@ struct MissionStatistics {
   int safety_stops = 0;  ///< steps the reactive stop held the robot
   int backtracks = 0;    ///< escapes along the robot's own trail (no frontier was reachable)
   int squeezes = 0;      ///< paths planned without the safety margin
-  int blocked_squeezes = 0;  ///< of those, to a goal whose way the margin had closed
   int forgiven_goals = 0;    ///< goals blacklisted for good, retried before "trapped"
   std::size_t retired_frontier_cells = 0;  ///< frontier cells that outlived a visit
   std::size_t scans = 0, map_refreshes = 0;
@@ -116,7 +115,6 @@ class Mission {
   bool squeeze();    ///< plans to a frontier on the map inflated by the body alone
   bool last_resort();  ///< squeeze or backtrack, alternating, before the mission is trapped
   bool second_chance();  ///< once: goals blacklisted for good are retried, progress along the path
-  bool squeeze_to_goal();  ///< the current goal on the map inflated by the body alone
   planner::Costmap body_costmap() const;  ///< the map inflated by the body, no safety margin
   planner::FollowerOptions close_tracking() const;  ///< for paths that fit only where drawn
   void follow(const Selection& s, const planner::FollowerOptions& tracking);  ///< a new goal and path

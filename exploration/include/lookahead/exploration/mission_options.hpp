@@ -3,6 +3,7 @@
 // P-SLAM paper's Stage setup where it gives one (P3-DX at 0.2 m/s, SICK LMS-200 180 deg).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -23,27 +24,23 @@ enum class PoseSource {
   kTruth,  ///< the map is built at the true pose (planner-only studies)
 };
 
+/// mission.pose_source in YAML (a named choice, slam/config/named_choice.hpp).
+constexpr std::array<std::pair<PoseSource, const char*>, 2> choice_names(PoseSource) {
+  return {{{PoseSource::kSlam, "slam"}, {PoseSource::kTruth, "truth"}}};
+}
+
 struct MissionOptions {
   std::string strategy = "nearest";  ///< target selection: nearest | utility | predictive
   double utility_lambda = 1.0;       ///< utility = gain [m^2] - lambda * cost [m]
-  /// The gain counts only unknown area in line of sight of the goal (walls occlude); false:
-  /// the whole disc within sensor range, space behind outer walls included.
-  bool gain_line_of_sight = true;
   PoseSource pose_source = PoseSource::kSlam;
   std::uint64_t seed = 1;            ///< seeds the sensor, odometry, SLAM and planner
   double time_limit = 1800.0;        ///< simulated seconds, > 0
   double coverage_goal = 0.95;       ///< stop at this share of the reachable free area, (0, 1]
   double goal_check_period = 1.0;    ///< how often the current goal is re-examined [s]
   double stuck_time = 30.0;          ///< no progress this long: blacklist the goal [s]
-  /// Progress towards a goal is also a shorter path left to drive, not only a shorter
-  /// straight line: a path around a wall can lead away from its goal for longer than
-  /// stuck_time.
-  bool progress_along_path = false;
   /// Only on a detour (more than 10 m of path left, over twice the straight distance), a
   /// shorter path left counts as progress too: a ring corridor can lead away from its goal
   /// for minutes, while in a door the margin flickers on the replanned paths stay short.
-  /// On by default since the costmap's threshold stopped the doors flickering (README,
-  /// "Doors that flicker"): with both, all 30 large-plan runs reach 95 % (29 within 4 h).
   bool detour_progress = true;
   int max_goal_attempts = 5;         ///< candidates tried per selection before "trapped"
   double metrics_period = 1.0;       ///< coverage is sampled this often [s]
@@ -58,19 +55,6 @@ struct MissionOptions {
   /// corridor within this distance ahead of its body [m] (walls the map has not caught up
   /// with yet).
   double stop_distance = 0.15;
-  /// When no frontier is reachable, retrace the robot's own trail to the last spot outside
-  /// its place on the costmap before calling the robot trapped (breadcrumbs.hpp).
-  bool backtrack = true;
-  /// The last resort before "trapped": when the ordinary tries (backtracks, looking around)
-  /// found no reachable frontier, plan on the map inflated by the robot's body alone (no
-  /// safety_margin) and follow that path closely, alternating with backtracks: a door wider
-  /// than the robot but narrower than robot + margin is no wall (the KTH plans have
-  /// 0.3-0.4 m doors). A mission that never runs out of tries is unchanged by it.
-  bool squeeze = true;
-  /// Squeeze before the last resort too: when the margin closes the way to a goal still
-  /// worth it (a door whose jambs get mapped on the way), and when every frontier the margin
-  /// leaves reachable is blacklisted for a while. Needs `squeeze`.
-  bool squeeze_when_blocked = false;
 
   slam::RbpfOptions slam;
   planner::PlannerOptions planner;

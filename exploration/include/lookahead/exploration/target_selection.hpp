@@ -57,9 +57,6 @@ struct SelectionInputs {
   /// The robot's body [m] (no safety margin): a backtrack's shortcut between two passes of
   /// the trail keeps this clear of occupied cells.
   double robot_radius = 0.0;
-  /// The gain of a frontier counts only the unknown area in line of sight of its goal
-  /// (visible_information_gain); false: the whole disc (information_gain).
-  bool gain_line_of_sight = true;
 };
 
 Selection select_target(const SelectionInputs& in);

@@ -2,7 +2,9 @@
 // Every parameter of plan(), with the costmap's nested. The defaults here are the only copy.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <utility>
 
 #include "lookahead/planner/costmap.hpp"
 
@@ -19,6 +21,13 @@ enum class PlannerAlgorithm {
   /// c exists, samples only the ellipse of points that could shorten it.
   kInformedRrtStar,
 };
+
+/// The algorithms' names (planner.algorithm in YAML; a named choice, slam/config/named_choice.hpp).
+constexpr std::array<std::pair<PlannerAlgorithm, const char*>, 3> choice_names(PlannerAlgorithm) {
+  return {{{PlannerAlgorithm::kRrtStar, "rrt_star"},
+           {PlannerAlgorithm::kPrmStar, "prm_star"},
+           {PlannerAlgorithm::kInformedRrtStar, "informed_rrt_star"}}};
+}
 
 [[nodiscard]] const char* to_string(PlannerAlgorithm algorithm);
 

@@ -2,8 +2,8 @@
 // The machinery every lookahead YAML loader shares. A library lists its keys once, as a
 // visitor over (section, key, field, doc); SectionLoader reads a file through that list
 // (rejecting unknown sections and keys, errors naming file:line, key and value) and
-// SectionDumper prints it back with a comment per key. Libraries add overloads for their
-// enums by deriving.
+// SectionDumper prints it back with a comment per key. Enums with a name table
+// (named_choice.hpp) are read and printed by name.
 #pragma once
 
 #include <fmt/format.h>
@@ -12,6 +12,8 @@
 #include <set>
 #include <sstream>
 #include <string>
+
+#include "lookahead/slam/config/named_choice.hpp"
 
 namespace lookahead::slam::config {
 
@@ -33,10 +35,16 @@ class SectionLoader {
   void operator()(const char* key, T& field, const char* /*doc*/) {
     const YAML::Node n = node(key);
     if (!n) return;
-    try {
-      field = n.as<T>();
-    } catch (const YAML::Exception&) {
-      fail_at(source_, n, name_ + "." + key, "bad value");
+    if constexpr (is_named_choice_v<T>) {
+      const auto v = choice_from_name<T>(n.IsScalar() ? n.Scalar() : "");
+      if (!v) fail_at(source_, n, name_ + "." + key, "bad value: expected " + choice_list<T>());
+      field = *v;
+    } else {
+      try {
+        field = n.as<T>();
+      } catch (const YAML::Exception&) {
+        fail_at(source_, n, name_ + "." + key, "bad value");
+      }
     }
   }
   /// Every section and key of the document must have been visited (`skip`: sections
@@ -72,8 +80,12 @@ class SectionDumper {
   void section(const char* name) { out_ << name << ":\n"; }
   template <typename T>
   void operator()(const char* key, const T& field, const char* doc) {
-    // fmt prints the shortest text that reads back to the same value (0.05, not 0.0500...01).
-    line(key, fmt::format("{}", field), doc);
+    if constexpr (is_named_choice_v<T>) {
+      line(key, choice_name(field), doc);
+    } else {
+      // fmt prints the shortest text that reads back to the same value (0.05, not 0.0500...01).
+      line(key, fmt::format("{}", field), doc);
+    }
   }
   [[nodiscard]] std::string str() const { return out_.str(); }
 

@@ -47,9 +47,6 @@ class GlobalMap {
   [[nodiscard]] const Eigen::VectorXd& mean() const { return mean_; }
   [[nodiscard]] const Eigen::MatrixXd& covariance() const { return covariance_; }
 
-  /// The point at which the next augmentation linearises g in v- (see global_map.cpp).
-  [[nodiscard]] Pose2 linearisation_origin() const;
-
   /// Steps 1 and 4 alone, exposed for tests: the state after augmentation by g.
   void augment(const GaussianMap& local);
 
@@ -63,9 +60,6 @@ class GlobalMap {
   FusionOptions options_;
   Eigen::VectorXd mean_;
   Eigen::MatrixXd covariance_;
-  /// The origin v- as it entered the map (augmented, before its fusion corrected it): the
-  /// point at which g is linearised when `first_estimate_jacobians` is set.
-  Pose2 first_origin_;
   /// With `relinearise`: every local map so far, re-solved at each fusion; mean_ and
   /// covariance_ then hold its newest origin and features.
   MapJoining joining_;

@@ -62,9 +62,6 @@ struct FusionOptions {
   /// Std added to each pair's difference in the association test only [m] (see global_map.cpp).
   double association_sigma = 0.15;
   int jcbb_max_nodes = 20000;     ///< cap on the branch-and-bound search
-  /// Linearise g at the origin's first estimate (its value when it entered the map), not at
-  /// its value after the fusion corrected it (see global_map.cpp). Off: measured no better.
-  bool first_estimate_jacobians = false;
   /// Beyond the paper: after each fusion, re-solve the global map over all local maps by
   /// Gauss-Newton (every Jacobian at the current solution) instead of keeping the EKF's
   /// once-linearised result (see global_map.cpp). On: Table 1 measured better (README).

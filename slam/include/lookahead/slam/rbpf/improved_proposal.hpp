@@ -10,7 +10,9 @@
 // GMapping's released code takes mu itself instead of sampling; we sample, as published.
 #pragma once
 
+#include <array>
 #include <random>
+#include <utility>
 
 #include "lookahead/slam/geometry/pose2.hpp"
 #include "lookahead/slam/grid/occupancy_grid.hpp"
@@ -19,7 +21,23 @@
 
 namespace lookahead::slam {
 
+/// How a particle draws its next pose.
+enum class ProposalKind {
+  /// The improved proposal (Grisetti 2007 sec. III-A/B, eq. 11-16): scan match, then sample
+  /// the Gaussian fitted around the match; the odometry model where the match fails.
+  kScanMatch,
+  /// The standard proposal: sample the odometry model, weight by the scan's likelihood
+  /// (Grisetti 2007 eq. (5); the particle step of P-SLAM and SegSLAM).
+  kMotionModel,
+};
+
+/// proposal.kind in YAML (a named choice, slam/config/named_choice.hpp).
+constexpr std::array<std::pair<ProposalKind, const char*>, 2> choice_names(ProposalKind) {
+  return {{{ProposalKind::kScanMatch, "scan_match"}, {ProposalKind::kMotionModel, "motion_model"}}};
+}
+
 struct ProposalOptions {
+  ProposalKind kind = ProposalKind::kScanMatch;
   double kernel_linear = 0.025;   ///< spacing of the K = 27 points in x and y [m]
   double kernel_angular = 0.0125; ///< spacing in theta [rad]
   /// Floor on the fitted standard deviations, a fraction of the kernel spacing: a likelihood

@@ -25,7 +25,6 @@
 #include "lookahead/slam/rbpf/rbpf_options.hpp"
 #include "lookahead/slam/rbpf/scan_matcher.hpp"
 #include "lookahead/slam/segslam/grid_submap_ops.hpp"
-#include "lookahead/slam/segslam/match_confirmation.hpp"
 #include "lookahead/slam/segslam/seg_map.hpp"
 #include "lookahead/slam/segslam/segslam_options.hpp"
 #include "lookahead/slam/sensor/laser_scan.hpp"
@@ -44,8 +43,6 @@ struct SegParticle {
   double motion_error = 0.0;   ///< eq. 13-14, accumulated in the open submap [m]
   /// err_ICP of the match that opened the submap [m]; infinite for a fresh submap.
   double entry_error = std::numeric_limits<double>::infinity();
-  /// The matches of the last attempt, for the next to confirm (MatchingOptions::confirmed_boost).
-  std::vector<PendingMatch> pending;
 };
 
 /// A re-entry: at `scan`, a particle moved into a copy of submap `candidate`.
@@ -60,7 +57,6 @@ struct SegSlamStatistics {
   std::size_t segmentations = 0;     ///< particle submaps started fresh
   std::size_t matches = 0;           ///< particle submaps started as a match
   std::size_t match_attempts = 0;    ///< candidates matched by ICP
-  std::size_t confirmed = 0;         ///< matches offered that the particle's last attempt predicted
   std::size_t pruned = 0;            ///< non-viable submaps dropped
   std::size_t locked = 0;            ///< re-entered submaps locked (localisation only)
   std::size_t merged = 0;            ///< closed re-entered submaps merged into their parent
@@ -105,9 +101,6 @@ class SegSlam {
   Transition predict_submap(SegParticle& p, const std::function<const LookaheadWindow&()>& window, std::mt19937_64& rng);
   std::vector<WindowMatch> match_candidates(const SegParticle& p, const LookaheadWindow& w,
                                             std::vector<std::size_t>& ids, std::mt19937_64& rng);
-  /// Multiplies the weights of the matches the particle's last attempt predicted by
-  /// MatchingOptions::confirmed_boost and keeps this attempt's as its pending ones.
-  void weigh_confirmed(SegParticle& p, const std::vector<std::size_t>& ids, std::vector<WindowMatch>& matches);
   void store_closed(SegParticle& p, Transition& t);
   void resample_if_needed();
 

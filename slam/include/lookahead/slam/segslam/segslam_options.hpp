@@ -87,18 +87,6 @@ struct MatchingOptions {
   int localization_particles = 200;
   /// A match with a smaller inlier share of the window's points is discarded. 0..1.
   double min_inlier_ratio = 0.6;
-  /// 2D: a match the particle's previous attempt predicted (the same segment, within
-  /// confirm_distance [m] and confirm_angle [rad] of where that match, carried along the
-  /// particle's motion, puts the robot; match_confirmation.hpp) has its eq. 18 weight
-  /// multiplied by this (capped at 1). >= 1; 1 (the default) turns it off. Deviation, opt-in
-  /// (config/segslam/few_particles.yaml sets 10): MIT CSAIL, 5 particles, seeds 1-120: 2.35 m
-  /// mean final error against 2.59 m without (1.33 against 1.49 m median, 45 runs under 1 m
-  /// against 31, 7 over 5 m against 10; Mann-Whitney one-sided p = 0.13); at 40 particles,
-  /// seeds 1-30, 1.48 m against 0.94 m (median 1.31 against 0.08 m), so not the default
-  /// (README, "Loop closure on MIT CSAIL").
-  double confirmed_boost = 1.0;
-  double confirm_distance = 1.0;
-  double confirm_angle = 0.2;
   /// Searches shared by the copies of a segment: particles whose candidates are copies of one
   /// segment (SegMap::first_copy: the same interval along the same parent chain, so the same
   /// frame and the same stretch of the world) screen on the first copy: where a search there

@@ -82,16 +82,6 @@ struct WideReentryOptions {
   /// the candidate's mapped area (1 particle, seed 1: 18 wide searches of one candidate, all
   /// failed); the region a search covers (3 sigma_tau, 12-25 m) moves little between attempts.
   int retry_updates = 0;
-  /// The stage runs only in filters of at most this many particles; 0 (the default): at any count.
-  /// Why an option (README "The wide stage only up to N particles: an option, not the default"):
-  /// its trigger sizes the map sample's error by the eq. 13-14 model of dead reckoning, which does
-  /// not see the particle count, while the filter's own drift shrinks with it (garage, 20
-  /// particles, seed 1: 26 wide searches from guesses 0.4-2.5 m off where the model said 3-6 m,
-  /// all in vain; without the stage 14 % less time at 20 particles, 8-9 % at 40 and 100). But the
-  /// stage also repairs a capped-stage alias: with --data-seed 2, 20 particles, seed 8, six
-  /// particles took the column-spacing alias 12 m off at sweep 234 and only a wide re-entry at
-  /// sweep 300 brought the run back (0.32 m; 10.0 m without the stage). So it stays on.
-  std::size_t max_particles = 0;
 };
 
 /// A particle's wide searches that found nothing, per candidate: the update from which that
