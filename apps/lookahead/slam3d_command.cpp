@@ -41,7 +41,6 @@ struct Slam3dArgs {
   int map_samples = -1;        ///< --method segslam: offline samples (-1: the config's)
   double max_search_radius = -1.0;  ///< --method segslam: reach cap (< 0: the default)
   double wide_reentry_radius = -1.0;  ///< --method segslam: wide search cap (0: off, < 0: the default)
-  int wide_retry_updates = -1;  ///< --method segslam: wait after a failed wide search (< 0: the default)
   bool search_per_particle = false;  ///< --method segslam: no search shared by a segment's copies
 };
 
@@ -154,7 +153,7 @@ void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& fil
   j["peak_memory_mb"] = peak_memory_mb();
   j["memory"] = memory_json(filter);
   j["map_known_voxels"] = map.known_voxels();
-  // Eq. 22 of the best particle's map, to compare with SegSLAM's minimum-entropy map sample.
+  // SegSLAM eq. (22) of the best particle's map, to compare with SegSLAM's minimum-entropy map sample.
   j["map_entropy_nats_m3"] = slam::octree_map_entropy(map);
   if (!truth.empty()) {
     const Eigen::Vector3d& end = truth.back().translation();
@@ -196,7 +195,7 @@ int run_slam3d(const Slam3dArgs& a) {
   const Input in = read_input(a, options);
   if (a.method == "segslam") {
     run_segslam3d({a.input, input_name(a.input), a.out, a.segslam_config, a.map_samples, a.data_seed,
-                   a.max_search_radius, a.wide_reentry_radius, a.wide_retry_updates, a.search_per_particle}, in.log, options);
+                   a.max_search_radius, a.wide_reentry_radius, a.search_per_particle}, in.log, options);
     if (in.world && a.input == "garage") slam::write_octomap(in.world->map, a.out + "/world.bt");
     return 0;
   }
@@ -248,12 +247,8 @@ Run add_slam3d_command(CLI::App& app) {
                  "since the candidate (default 6; 0 keeps the fixed 2 m search)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--wide-reentry-radius", args->wide_reentry_radius,
-                 "--method segslam: cap of the wide re-entry search beyond that reach [m], sized by eq. 18's "
+                 "--method segslam: cap of the wide re-entry search beyond that reach [m], sized by SegSLAM eq. (18)'s "
                  "sigma_tau and taken only when one pose of it fits (default 25; 0: off)")
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--wide-retry-updates", args->wide_retry_updates,
-                 "--method segslam: filter updates a candidate whose wide re-entry search found nothing waits "
-                 "before that particle searches it widely again (0: at every attempt)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--search-per-particle", args->search_per_particle,
                "--method segslam: every particle searches its own copy of a candidate segment (default: the "

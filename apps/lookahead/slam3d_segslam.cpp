@@ -156,7 +156,7 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
   j["pruned_submaps"] = st.pruned;
   j["live_submaps"] = f.segmap().live_count();
   j["segments"] = f.segmap().segment_count();
-  // Locking and merging (sec. 6; the `locking:` keys of --segslam-config, off by default).
+  // Locking and merging (SegSLAM sec. 6; the `locking:` keys of --segslam-config, off by default).
   j["locked_submaps"] = st.locked;
   j["locked_particle_updates"] = st.locked_updates;  // particle steps without ray insertion
   j["merged_submaps"] = st.merged;
@@ -176,7 +176,7 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
 }
 
 // RMSE of a path's positions in the plane from the truth after the best SE(2) alignment: how
-// consistent a map drawn along that path is (the 2D study's measure, bench/segslam/csail_error.py --global).
+// consistent a map drawn along that path is (the 2D study's measure of a map's consistency).
 double aligned_planar_rmse(const slam::RangeLog3& log, const std::vector<slam::Pose4>& path) {
   std::vector<slam::StampedPose> truth, estimate;
   for (std::size_t i = 0; i < log.sweeps.size() && i < path.size(); ++i) {
@@ -216,7 +216,6 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   options.extras.record_attempts = spdlog::should_log(spdlog::level::debug);
   if (run.max_search_radius >= 0) options.segslam.matching.max_search_radius = run.max_search_radius;
   if (run.wide_reentry_radius >= 0) options.extras.wide.max_radius = run.wide_reentry_radius;
-  if (run.wide_retry_updates >= 0) options.extras.wide.retry_updates = run.wide_retry_updates;
   if (run.search_per_particle) options.segslam.matching.share_by_segment = false;
   if (run.map_samples >= 0) {
     options.segslam.offline.map_samples = run.map_samples;
@@ -267,8 +266,7 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
                        {"angle_per_error_rad_per_m", wide.angle_per_error}, {"max_angle_rad", wide.max_angle},
                        {"peaks", wide.peaks}, {"separation_m", wide.separation},
                        {"angle_separation_rad", wide.angle_separation},
-                       {"confirm_distance_m", wide.confirm_distance}, {"confirm_angle_rad", wide.confirm_angle},
-                       {"retry_updates", wide.retry_updates}};
+                       {"confirm_distance_m", wide.confirm_distance}, {"confirm_angle_rad", wide.confirm_angle}};
   j["map_entropy_nats_m3"] = best_map.best.entropy;
   j["chain_entropy_nats_m3"] = best_map.chain_entropy;  // 0 with offline.particle_chain off
   j["map_is_particle_chain"] = best_map.best.chain;

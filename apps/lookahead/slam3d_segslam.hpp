@@ -23,8 +23,6 @@ struct SegSlam3dRun {
   double max_search_radius = -1.0;
   /// Cap of the wide, unambiguous re-entry search [m] (wide_reentry.hpp); 0: off, < 0: the default.
   double wide_reentry_radius = -1.0;
-  /// Updates a candidate whose wide search found nothing waits before the next (wide_reentry.hpp); < 0: the default.
-  int wide_retry_updates = -1;
   /// Every particle searches its own copy of a segment (MatchingOptions::share_by_segment off).
   bool search_per_particle = false;
 };

@@ -97,7 +97,7 @@ int run_segslam(const SegSlamArgs& a) {
   filter.finish();
   bar.finish();
   const double filter_s = seconds_since(start);
-  // Offline (sec. 5.4): many map samples, keep the one of least entropy.
+  // Offline (SegSLAM sec. 5.4): many map samples, keep the one of least entropy.
   const auto offline_start = std::chrono::steady_clock::now();
   const auto best = slam::segslam::min_entropy_search(filter, options.offline.map_samples, rbpf.seed, rbpf.threads);
   const double offline_s = seconds_since(offline_start);
@@ -105,7 +105,7 @@ int run_segslam(const SegSlamArgs& a) {
   std::filesystem::create_directories(a.out);
   slam::write_map(best.best.map, a.out, "map");
   write_trajectory_files(a.out, "trajectory", log, filter.trajectory_at_every_scan(filter.best_particle()));
-  // The path the map was pasted from (bench/segslam/csail_error.py --global scores maps by it).
+  // The path the map was pasted from (a map is scored by its consistency with it).
   write_trajectory_files(a.out, "map_trajectory", log, slam::segslam::sample_trajectory_at_every_scan(filter, best.best));
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.scans) odometry.push_back(s.odometry);

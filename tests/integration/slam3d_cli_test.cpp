@@ -134,10 +134,6 @@ TEST_F(Slam3dCli, NegativeWideReentryRadiusIsRejectedWithItsValue) {
   expect_segslam_rejects("--wide-reentry-radius", "-3");
 }
 
-TEST_F(Slam3dCli, NegativeWideRetryUpdatesIsRejectedWithItsValue) {
-  expect_segslam_rejects("--wide-retry-updates", "-4");
-}
-
 TEST_F(Slam3dCli, UnknownInputIsAnError) {
   const Result r = run("/nonexistent/place --out " + dir.string(), dir / "log.txt");
   EXPECT_NE(r.code, 0);

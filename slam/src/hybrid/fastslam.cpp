@@ -98,7 +98,7 @@ void FastSlam::observe(const std::vector<RangeBearing>& z) {
     total += particles_[i].weight;
   }
   for (auto& p : particles_) p.weight /= total;
-  if (!z.empty()) vote_correspondences(particles_, decisions, next_id_);  // sec. 3.1
+  if (!z.empty()) vote_correspondences(particles_, decisions, next_id_);  // HybridSLAM sec. 3.1
   cull();
   resample_if_degenerate();
 }

@@ -52,7 +52,7 @@ PoseGaussian GlobalMap::compose(const PoseGaussian& local) const {
           jo * covariance_.topLeftCorner<3, 3>() * jo.transpose() + jl * local.covariance * jl.transpose()};
 }
 
-// Sec. 4: x+ = [x-; g(v-, x_L)] with
+// HybridSLAM sec. 4: x+ = [x-; g(v-, x_L)] with
 // P+ = [P-, P-_{:v} dg_v^T; dg_v P-_{v:}, dg_v P_vv dg_v^T + dg_z P_L dg_z^T].
 // With `relinearise` (the default) the augmentation below only serves the association test.
 void GlobalMap::augment(const GaussianMap& local) {
@@ -108,19 +108,14 @@ FusionReport GlobalMap::fuse(const GaussianMap& local) {
   return report;
 }
 
-// Deviation (beyond the paper): the EKF above linearises g once, at the origin's estimate
-// of the moment, and never again. In the failed trials of Table 1 that estimate's heading was off
-// by 0.04-0.07 rad (1-2 std) from the first fusion on, and the global heading std then fell
-// threefold around the loop (trial 18 at (0.7, 0.02): 0.024 -> 0.009 rad) while the error
-// stayed: the information of local maps linearised at different points adds up to heading
-// information no local map holds (the EKF-SLAM inconsistency of Bailey et al. 2006, sec.
-// 5.4 of the paper), while each local map alone was consistent (joint NEES per dof at its
-// fusion against the truth: median 1.11 over 582 fusions of 15 failed trials). Re-solving
-// all local maps together by Gauss-Newton (iterated SLSJF, Huang, Wang & Dissanayake 2008)
-// evaluates every Jacobian at one point, the current solution, so the joined information
-// keeps the rotation structure of each local map. The pairs are those the EKF step chose
-// (JCBB); the EKF result seeds the solver. Measured: Table 1 HYBRID 92/86/89/86 % ->
-// 96/95/93/83 % over the four clutter levels (README).
+// Deviation (beyond the paper; `relinearise`): the EKF above linearises g once, at the
+// origin's estimate of the moment, and never again. Local maps linearised at different
+// points add up to heading information no local map holds (the EKF-SLAM inconsistency of
+// Bailey et al. 2006; HybridSLAM sec. 5.4), so the global heading std shrinks while its
+// error stays. Re-solving all local maps together by Gauss-Newton (iterated SLSJF, Huang,
+// Wang & Dissanayake 2008) evaluates every Jacobian at one point, the current solution, so
+// the joined information keeps the rotation structure of each local map. The pairs are those
+// the EKF step chose (JCBB); the EKF result seeds the solver.
 void GlobalMap::relinearise(const GaussianMap& local, const std::vector<int>& match, std::size_t old_features) {
   std::vector<Eigen::Vector2d> new_guess;
   for (std::size_t k = old_features; k < features(); ++k) new_guess.push_back(feature(k));
@@ -131,13 +126,10 @@ void GlobalMap::relinearise(const GaussianMap& local, const std::vector<int>& ma
 
 // JCBB between the new features (slots first_new..) and the old ones (slots 0..first_new-2):
 // the innovation of a pair is the difference theta_new - theta_old. Deviation: the test adds
-// association_sigma^2 I to its covariance (the fusion itself stays zero-noise, eq. 10). A
+// association_sigma^2 I to its covariance (the fusion itself stays zero-noise, HybridSLAM eq. (10)). A
 // FastSLAM local map is overconfident about its features relative to its vehicle (the
 // particles lose path diversity within a local map); without the floor, copies of one
 // feature a few centimetres apart failed the test and the map filled with duplicates.
-// Measured since (README): the local maps are consistent at fusion (joint NEES per dof
-// median 1.1), and with `relinearise` Table 1 is the same without the floor; it stays for
-// the logs, not re-measured without it.
 std::vector<int> GlobalMap::associate(std::size_t first_new, std::size_t count, FusionReport& report) const {
   const std::size_t old_count = first_new - 1;
   const Eigen::Index n = mean_.size();
@@ -165,7 +157,7 @@ std::vector<int> GlobalMap::associate(std::size_t first_new, std::size_t count, 
   return r.target_of;
 }
 
-// Eq. (10): the zero-noise observation theta_a - theta_b = 0 of every pair at once.
+// HybridSLAM eq. (10): the zero-noise observation theta_a - theta_b = 0 of every pair at once.
 double GlobalMap::fuse_pairs(const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
   if (pairs.empty()) return 0.0;
   const Eigen::Index m = 2 * static_cast<Eigen::Index>(pairs.size()), n = mean_.size();

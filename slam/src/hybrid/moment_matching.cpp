@@ -22,7 +22,7 @@ Eigen::Vector3d pose_vector(const Pose2& pose, double reference_heading) {
 
 // Per particle, the landmark index standing for each selected common feature (-1: none).
 // A particle holding several landmarks with one gamma contributes one of them, drawn at
-// random (sec. 3.2, first corner case).
+// random (HybridSLAM sec. 3.2, first corner case).
 std::vector<std::vector<int>> representatives(const std::vector<Particle>& particles,
                                               const std::vector<long>& ids, std::mt19937_64& rng) {
   std::map<long, std::size_t> column;
@@ -79,7 +79,7 @@ PoseGaussian moment_match_pose(const std::vector<Particle>& particles) {
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   for (const auto& p : particles) {
     const Eigen::Vector3d d = pose_vector(p.pose, ref) - mean;
-    cov += p.weight / total * d * d.transpose();  // eq. (7): P_vv^p = 0 for a particle
+    cov += p.weight / total * d * d.transpose();  // HybridSLAM eq. (7): P_vv^p = 0 for a particle
   }
   return {{mean.x(), mean.y(), normalize_angle(mean.z())}, cov};
 }
@@ -121,7 +121,7 @@ GaussianMap moment_match(const std::vector<Particle>& particles, double min_exis
     holder_cov[k] /= holder_w[k];
   }
 
-  // Eq. (9): each particle's stacked mean; eq. (6)-(7) over them.
+  // HybridSLAM eq. (9): each particle's stacked mean; HybridSLAM eq. (6)-(7) over them.
   std::vector<Eigen::VectorXd> x(particles.size(), Eigen::VectorXd(n));
   g.mean = Eigen::VectorXd::Zero(n);
   g.covariance = Eigen::MatrixXd::Zero(n, n);

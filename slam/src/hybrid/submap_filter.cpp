@@ -24,7 +24,7 @@ void SubmapFilter::step(const MotionStep& control, const std::vector<RangeBearin
   if (fuse_ && fusion_due()) fuse_now();
 }
 
-// Sec. 5.1: fuse every `period` seconds. Adaptive rule (beyond the paper, its sec. 6
+// HybridSLAM sec. 5.1: fuse every `period` seconds. Adaptive rule (beyond the paper, its HybridSLAM sec. 6
 // suggestion): past the period, wait while the front-end is unsettled, up to max_delay.
 bool SubmapFilter::fusion_due() {
   const FusionOptions& f = options_.fusion;

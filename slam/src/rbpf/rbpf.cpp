@@ -113,7 +113,7 @@ void Rbpf::update_particles(const LaserScan& scan) {
   ++stats_.updates;
 }
 
-// Eq. 21-22: w = w S1(z_e | m) S2(z_u | h). S1 is already in the weight: the improved
+// P-SLAM eq. (21)-(22): w = w S1(z_e | m) S2(z_u | h). S1 is already in the weight: the improved
 // proposal's eta scores every end point on m, and end points in unexplored cells score the
 // same constant there. Deviation: the paper assumes the motion-model proposal; we keep the
 // improved proposal (scan matching on m only) and multiply S2 at the drawn pose, tempered
@@ -128,7 +128,7 @@ void Rbpf::apply_hypothesis_weights(const std::vector<HypothesisScore>& scores) 
   }
   if (!any_predicted) return;
   ++stats_.predicted_updates;
-  if (!any_hit) {  // eq. 23: no particle sees the prediction; it must be wrong here
+  if (!any_hit) {  // P-SLAM eq. (23): no particle sees the prediction; it must be wrong here
     ++stats_.prediction_rejected;
     return;
   }

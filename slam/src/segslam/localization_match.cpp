@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Matching by a separate localisation particle filter (Fairfield et al. 2010, sec. 4.5.2,
-// eq. 19). Created for one match and discarded afterwards.
+// Matching by a separate localisation particle filter (Fairfield et al. 2010, SegSLAM sec. 4.5.2,
+// SegSLAM eq. (19)). Created for one match and discarded afterwards.
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <cmath>

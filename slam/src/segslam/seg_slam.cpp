@@ -44,7 +44,7 @@ void SegSlam::add_scan(const LaserScan& scan) {
   scans_.push_back(scan);
   ++stats_.scans;
   if (particles_.empty()) initialize();
-  // Sec. 4.1: the filter runs a look-ahead window behind the newest scan.
+  // SegSLAM sec. 4.1: the filter runs a look-ahead window behind the newest scan.
   while (next_pending_ < scans_.size() &&
          scans_.back().timestamp - scans_[next_pending_].timestamp >= options_.segmentation.lookahead_s) {
     const std::size_t k = next_pending_++;
@@ -143,7 +143,7 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
     while (segmap_.at(id).merged) id = segmap_.at(id).parent;
     const GridSubmap& c = segmap_.at(id);
     if (std::any_of(candidates.begin(), candidates.end(), [&](const auto& k) { return k.id == id; })) continue;
-    // Sec. 4.5.1 winnowing: temporal separation, then spatial proximity. A submap in the
+    // SegSLAM sec. 4.5.1 winnowing: temporal separation, then spatial proximity. A submap in the
     // particle's own frame (already re-entered) is no candidate. Deviation: proximity is the
     // distance to the candidate's own path (the robot stood there), not any observed cell:
     // a laser sees far, and observed cells alone let through most of a building.
@@ -152,11 +152,8 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
     const Pose2 guess = sample[i].frame.inverse().compose(p.pose);
     const double d = distance_to_path(c, guess.x, guess.y);
     // Deviation (candidate_reach.hpp, as in 3D): the reach widens with the error since the
-    // candidate was left. On MIT CSAIL (real odometry, 5 particles) the map sample's guesses
-    // were several metres off after the building's loops; with the fixed 2 m search 19 of 20
-    // runs ended over 1 m off (9.4 m mean against 1.4 m; slam_factor 0.5, 4 m segments, README).
-    // The cap (max_search_radius 10 m): at 15 m the 60 seeds' mean was 2.86 m against 2.56 m,
-    // at four times the run time (session 20, the 2D defaults).
+    // candidate was left: after a long loop the map sample's guess is metres off, beyond a
+    // fixed 2 m search. Capped at max_search_radius (a wider search costs time, not error).
     const MatchingOptions reach = candidate_reach(o, error_since(id), o.max_search_radius);
     if (d > reach.proximity_radius || !has_observed_near(c.map, guess.x, guess.y, reach.proximity_radius)) continue;
     candidates.push_back({d, id, guess, reach});
@@ -166,7 +163,7 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
   std::vector<WindowMatch> out;
   for (const Candidate& c : candidates) {
     WindowMatch m = screened_match(c.id, c.guess, w, c.reach);
-    // The frame's first scan lets bench/segslam/csail_match_labels.py place the match against the reference.
+    // The frame's first scan places the match against a reference trajectory.
     spdlog::debug("scan {} candidate {} [{}-{}] frame {} guess ({:.2f} {:.2f} {:.2f}) -> ({:.2f} {:.2f} {:.2f}) err {:.3f} tau {:.2f} ok {} w {:.3f}",
                   last_update_, c.id, segmap_.at(c.id).interval.first_scan, segmap_.at(c.id).interval.last_scan,
                   frame_root(segmap_, segmap_.at(c.id))->interval.first_scan,
@@ -234,7 +231,7 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const std::function<
                                             std::mt19937_64& rng) {
   Transition t;
   const SegmentationOptions& so = options_.segmentation;
-  // Eq. 17 only where it can decide (a large enough submap, motion error below its bound).
+  // SegSLAM eq. (17) only where it can decide (a large enough submap, motion error below its bound).
   const bool score_it = p.submap_updates >= so.min_segment_updates && p.motion_error < so.max_motion_error &&
                         so.predictive_threshold > 0;
   const double score = score_it ? predictive_score(p.submap.map, p.pose, window(), likelihood_) : -1.0;
@@ -244,13 +241,13 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const std::function<
   // Periodic matching runs at the same updates for every particle, so particles that share
   // a history ask for the same match in the same update and share it through the cache; like
   // the temporal-separation criterion, it does not start over in a submap just entered
-  // (hysteresis, sec. 4.5.1).
+  // (hysteresis, SegSLAM sec. 4.5.1).
   const int period = options_.matching.period_updates;
   const bool periodic = stats_.updates % static_cast<std::size_t>(period) == 0 && p.submap_updates >= period;
   if (segment || periodic) matches = match_candidates(p, window(), ids, rng);
   std::vector<double> weights;
   for (const WindowMatch& m : matches) weights.push_back(m.weight);
-  const ChoiceDraw draw = draw_submap_choice(segment, weights, options_.matching, rng);  // eq. 3
+  const ChoiceDraw draw = draw_submap_choice(segment, weights, options_.matching, rng);  // SegSLAM eq. (3)
   if (draw.choice == SubmapChoice::kSame) return t;
   const LaserScan& at = scans_[last_update_];
   GridSubmap next;
@@ -283,7 +280,7 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const std::function<
 
 void SegSlam::update(std::size_t k) {
   const Pose2 u = scans_[last_update_].odometry.between(scans_[k].odometry);
-  // Built once, by the first particle that scores eq. 17 or matches: binning the window's
+  // Built once, by the first particle that scores SegSLAM eq. (17) or matches: binning the window's
   // points was serial work at every update, where three in four do neither.
   std::once_flag window_once;
   LookaheadWindow w;
@@ -306,7 +303,7 @@ void SegSlam::update(std::size_t k) {
     transitions[static_cast<std::size_t>(i)] = predict_submap(p, window, rng);
     const bool is_warm = p.submap_updates >= rbpf_.warmup_updates || p.submap.parent != kNoSubmap;
     const double before = p.log_weight;
-    // A locked submap is localised in, never written (sec. 6).
+    // A locked submap is localised in, never written (SegSLAM sec. 6).
     failed[static_cast<std::size_t>(i)] =
         p.submap.locked ? draw_particle(models, p.submap.map, p.pose, p.log_weight, u, prepared, is_warm, rng)
                         : advance_particle(models, p.submap.map, p.pose, p.log_weight, u, scans_[k], prepared, is_warm, rng);
@@ -355,7 +352,7 @@ void SegSlam::store_closed(SegParticle& p, Transition& t) {
     stats_.locked += p.submap.locked ? 1 : 0;
     stats_.match_events.push_back({last_update_, t.candidate, t.weight});
   }
-  // Sec. 6: a re-entry registered well enough is merged into the submap it matched, so
+  // SegSLAM sec. 6: a re-entry registered well enough is merged into the submap it matched, so
   // repeated traversals add no maps (a locked one adds no evidence either).
   if (!options_.locking.merge || parent == kNoSubmap || t.closed_entry_error > options_.locking.merge_max_error) return;
   if (segmap_.merge_into_parent(id, add_child_evidence)) {

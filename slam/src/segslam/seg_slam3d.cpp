@@ -32,18 +32,17 @@ SegSlamOptions segslam3d_defaults() {
   o.matching.bin_size = 0.2;
   o.matching.icp_iterations = 20;
   o.matching.icp_max_distance = 0.5;
-  // Eq. 18 on the structure points' error (match_window): right re-entries showed 0.02-0.1 m
-  // on the garage logs (README).
+  // SegSLAM eq. (18) on the structure points' error (match_window): right re-entries on the
+  // garage show 0.02-0.1 m.
   o.matching.icp_sigma = 0.05;
   o.matching.null_error = 0.08;
   o.matching.proximity_radius = 4.0;
-  // The map sample's guess was up to 0.36 rad off in yaw at the garage loop's closure
-  // (logged match offers, README): the coarse search must reach that far.
+  // The map sample's guess may be over 0.3 rad off in yaw at a loop's closure: the coarse
+  // search must reach that far.
   o.matching.search_angle = 0.4;
   o.offline.map_samples = 5;
-  // The best particle's chain as a map candidate (on in 2D) is off: on the garage loop it won
-  // the entropy search in 6 of 10 runs but drew a path further from the truth (5 particles,
-  // seeds 1-6: 1.99 m mean RMSE after alignment against 1.42 m for the samples; README).
+  // The best particle's chain as a map candidate (on in 2D) is off: on the garage loop it wins
+  // the entropy search with a path further from the truth than the samples'.
   o.offline.particle_chain = false;
   // The paper's segmentation (the 2D defaults changed for the scan-matching proposal): the
   // garage's sweeps weigh by ray casting, and its studies ran with these.
@@ -62,7 +61,7 @@ struct SegSlam3d::SweepModel {
   std::vector<Eigen::Vector3d> ends;  ///< scored end points, robot frame
   std::vector<Ray3> rays;             ///< inserted beams, robot frame
   std::size_t sweep = 0;
-  double motion_error = 0.0;          ///< eq. 13-14 increment [m]
+  double motion_error = 0.0;          ///< SegSLAM eq. (13)-(14) increment [m]
 };
 
 namespace {
@@ -106,7 +105,7 @@ void SegSlam3d::add_sweep(const RangeSweep& sweep) {
 void SegSlam3d::finish() { run_pending(0.0); }
 
 void SegSlam3d::run_pending(double lookahead_s) {
-  // Sec. 4.1: the filter runs a look-ahead window behind the newest sweep.
+  // SegSLAM sec. 4.1: the filter runs a look-ahead window behind the newest sweep.
   while (next_pending_ < sweeps_.size() && sweeps_.back().time - sweeps_[next_pending_].time >= lookahead_s) {
     update(next_pending_++);
   }
@@ -147,7 +146,7 @@ SegSlam3d::Transition SegSlam3d::ask_submap(SegParticle3& p, const SweepWindow& 
   Transition t;
   const SegmentationOptions& so = options_.segslam.segmentation;
   const MatchingOptions& mo = options_.segslam.matching;
-  // Eq. 17 only where it can decide (a large enough submap, motion error below its bound).
+  // SegSLAM eq. (17) only where it can decide (a large enough submap, motion error below its bound).
   const bool score_it = p.submap_updates >= so.min_segment_updates && p.motion_error < so.max_motion_error &&
                         so.predictive_threshold > 0;
   const double score = score_it ? predictive_score(p.submap.map, p.pose, w) : -1.0;
@@ -171,7 +170,7 @@ void SegSlam3d::choose_submap(SegParticle3& p, Transition& t, const SweepWindow&
     weights.push_back(matches[i].weight);
     t.offers.push_back(offer_of(ids[i], t.guesses[i], matches[i]));
   }
-  const ChoiceDraw draw = draw_submap_choice(segment, weights, mo, rng);  // eq. 3
+  const ChoiceDraw draw = draw_submap_choice(segment, weights, mo, rng);  // SegSLAM eq. (3)
   if (draw.choice == SubmapChoice::kMatch) t.offers[draw.match].chosen = true;
   if (draw.choice == SubmapChoice::kSame) return;
   // A pending wide re-entry (wide_reentry.hpp) follows the particle into a fresh frame, which
@@ -213,7 +212,7 @@ void SegSlam3d::advance(SegParticle3& p, const SweepModel& s, std::mt19937_64& r
   std::vector<Eigen::Vector3d> world(s.ends.size());
   for (std::size_t k = 0; k < s.ends.size(); ++k) world[k] = after * s.ends[k];
   p.log_weight += options_.filter.weight_exponent * octree_log_likelihood(p.submap.map, world, options_.filter.likelihood);
-  // A locked submap is localised in, never written (sec. 6): the particle keeps sharing the
+  // A locked submap is localised in, never written (SegSLAM sec. 6): the particle keeps sharing the
   // matched submap's octree, and skips the ray insertion that dominates the 3D step.
   if (!p.submap.locked) insert_rays(p.submap.map, rays_at(after, s.rays), options_.filter.insert);
   p.submap.path.push_back({s.sweep, p.pose});
@@ -258,7 +257,7 @@ void SegSlam3d::update(std::size_t k) {
     advance(particles_[u], s, rngs[u]);
     gain[u] = particles_[u].log_weight - before;
   };
-  // Prediction (eq. 3) in three steps: each particle asks for its matches, the capped searches
+  // Prediction (SegSLAM eq. (3)) in three steps: each particle asks for its matches, the capped searches
   // run for all of them together (seg_slam3d_capped.cpp), each particle draws its submap and
   // steps; the wide searches asked for run last, beside the steps of the particles that asked.
 #pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())

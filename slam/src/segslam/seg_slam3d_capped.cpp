@@ -1,15 +1,14 @@
 // SPDX-License-Identifier: MIT
-// SegSLAM 3D's capped searches (sec. 4.5.2; the reach of candidate_reach.hpp), one per
+// SegSLAM 3D's capped searches (SegSLAM sec. 4.5.2; the reach of candidate_reach.hpp), one per
 // searched submap and update: the particles ask for them while they predict
 // (SegSlam3d::ask_matches), and the requests on one submap (a segment's first copy, or the
 // candidate itself with matching.share_by_segment off) are searched together, each guess's
 // rounded region answered from one grid (match_regions), before the particles draw.
 //
-// Why: at 20 particles the particles match at the same updates (they descend from few
-// resampled parents) and asked for 14-15 capped searches per such update (seed 1), from map
-// sample guesses a metre or two apart on the copies of one or two segments: each search's
-// grid covered most of the others', and ICP from their best poses mostly converged to one
-// pose. Searched alone they cost about as much as the wide stage's searches altogether.
+// Why: the particles match at the same updates (they descend from few resampled parents)
+// and ask for many capped searches per such update, from map-sample guesses a metre or two
+// apart on the copies of one or two segments: each search's grid covers most of the others',
+// and ICP from their best poses mostly converges to one pose.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -76,7 +75,7 @@ void SegSlam3d::run_capped_stage(std::vector<Transition>& transitions, const Swe
 void SegSlam3d::run_capped_search(CappedSearch& s, const SweepWindow& w) {
   const auto start = std::chrono::steady_clock::now();
   if (s.options.use_localization_filter) {
-    // Eq. 19: a localisation filter per region (nothing to share between them).
+    // SegSLAM eq. (19): a localisation filter per region (nothing to share between them).
     for (const LevelSubgrid& region : s.regions) s.results.push_back(capped_search(s.searched, region, s.options, w));
   } else {
     s.results = match_regions(*target_of(s.searched), window_with_structure(w), s.regions, s.options,

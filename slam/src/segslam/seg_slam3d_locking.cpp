@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
-// SegSLAM 3D's locking and merging (Fairfield et al. 2010, sec. 6: "well-known segments can
+// SegSLAM 3D's locking and merging (Fairfield et al. 2010, SegSLAM sec. 6: "well-known segments can
 // be locked to prevent updates, such that particles that reenter those segments perform
 // localization"; "submaps can be quickly merged by adding the evidence grids when their
 // relative positions become certain"), with the 2D filter's options and criteria
 // (LockingOptions, seg_slam.cpp). Off by default, as in 2D.
 //
 // Deviation (as in 2D): the paper gives the ideas, not the criteria; "well known" and
-// "relative position certain" are both judged by eq. 18's err_ICP of the match that re-entered
+// "relative position certain" are both judged by SegSLAM eq. (18)'s err_ICP of the match that re-entered
 // the submap (in 3D the structure points' error, octree_submap_ops.hpp).
 //
 // Why it matters more in 3D: ray insertion into the octree is the largest part of a

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// SegSLAM 3D's matching step (Fairfield et al. 2010, sec. 4.5): the candidates of a particle's
-// local map sample, winnowed (sec. 4.5.1), matched (sec. 4.5.2: the capped search of
+// SegSLAM 3D's matching step (Fairfield et al. 2010, SegSLAM sec. 4.5): the candidates of a particle's
+// local map sample, winnowed (SegSLAM sec. 4.5.1), matched (SegSLAM sec. 4.5.2: the capped search of
 // candidate_reach.hpp, then the wide unambiguous search of wide_reentry.hpp) and weighted by
-// eq. 18 (or eq. 19: localization_match3.hpp). Both searches are asked for here and run for
+// SegSLAM eq. (18) (or SegSLAM eq. (19): localization_match3.hpp). Both searches are asked for here and run for
 // all particles together: the capped ones before the particles draw (seg_slam3d_capped.cpp),
 // the wide ones after (seg_slam3d_wide.cpp). Split out of seg_slam3d.cpp, whose filter loop
 // calls it.
@@ -75,18 +75,14 @@ void SegSlam3d::collect_matches(SegParticle3& p, const SweepWindow& w, Transitio
     WindowMatch3 m;
     if (!c.wide_only) m = capped_result(c, t.screens[k], w);
     // The wide stage where the capped search found nothing and the candidate's uncertainty
-    // reaches beyond it; for the nearest such candidate only (its cost: the stage ran for
-    // every candidate at first, and 10 particles took 5-8 times main's time).
-    // A candidate whose last wide search found nothing waits (WideReentryOptions::retry_updates).
-    const bool backed_off = !m.ok && c.wide.has_value() && !p.wide_backoff.allows(c.id, last_update_);
-    if (!m.ok && !wide_searched && c.wide.has_value() && !backed_off) {
+    // reaches beyond it; for the nearest such candidate only (the stage is costly).
+    if (!m.ok && !wide_searched && c.wide.has_value()) {
       // Run after this update's predictions, with the other particles' of the segment
       // (seg_slam3d_wide.cpp); its result is never offered at this attempt anyway.
       t.wide = WideRequest{c.id, c.guess, *c.wide, c.attempt, t.pending_weight, p.pose, std::nullopt, false};
       wide_searched = true;
       continue;
     }
-    if (backed_off && c.wide_only) m.rejection = "backed off";
     if (record) this->record(t.attempts[c.attempt], c.id, m, false);
     if (!m.ok) continue;
     t.ids.push_back(c.id);
@@ -106,15 +102,13 @@ void SegSlam3d::apply_wide(SegParticle3& p, const WideRequest& r, WindowMatch3 m
   m.translation = (m.pose.position() - r.guess.position()).norm();
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(r.candidate)) : 0.0;
   // A wide pose farther from this particle's guess than the reach (the search started from
-  // a rounded guess, and ICP moves) is outside the region its uncertainty allows. (10
-  // particles, seed 1, sweep 287: 12.2 m from guesses 0.2-0.7 m off the truth, reach 11.3 m,
-  // an alias one column spacing off, confirmed once and taken.)
+  // a rounded guess, and ICP moves) is outside the region its uncertainty allows: such
+  // poses were aliases one column spacing off.
   if (m.ok && m.translation > r.options.search_radius) m.ok = false, m.weight = 0.0, m.rejection = "beyond reach";
-  if (!m.ok) p.wide_backoff.failed(r.candidate, last_update_, options_.extras.wide.retry_updates);
   if (options_.extras.record_attempts) record(attempts[r.attempt], r.candidate, m, true);
   if (!m.ok || r.dropped) return;
   // Not offered yet: the next attempt checks it (wide_reentry.hpp); it replaces a confirmed
-  // one only if heavier by eq. 18. Placed as at the request, then carried as the pending
+  // one only if heavier by SegSLAM eq. (18). Placed as at the request, then carried as the pending
   // re-entry would have been.
   PendingReentry found = pending_of(r.candidate, m.pose, r.guess, r.pose);
   if (r.carried) found = carried_into(found, *r.carried);
@@ -136,7 +130,7 @@ std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::
     if (id == skip) continue;  // a pending re-entry, confirmed
     if (std::any_of(candidates.begin(), candidates.end(), [&](const Candidate& k) { return k.id == id; })) continue;
     const OctreeSubmap& c = segmap_.at(id);
-    // Sec. 4.5.1 winnowing as in 2D: temporal separation, not the particle's own frame,
+    // SegSLAM sec. 4.5.1 winnowing as in 2D: temporal separation, not the particle's own frame,
     // and (Deviation, as in 2D) near the candidate's own path, here also in height.
     if (c.interval.t_end > now - o.min_separation_s) continue;
     if (frame_root(segmap_, c)->interval == own_root->interval) continue;
@@ -214,7 +208,7 @@ WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, 
 
 WindowMatch3 SegSlam3d::capped_search(std::size_t candidate, const LevelSubgrid& region, const MatchingOptions& o,
                                       const SweepWindow& w) {
-  // Sec. 4.5.2: eq. 18 (coarse search and ICP) or the localisation filter of eq. 19.
+  // SegSLAM sec. 4.5.2: SegSLAM eq. (18) (coarse search and ICP) or the localisation filter of SegSLAM eq. (19).
   if (o.use_localization_filter) {
     return localize_window3(segmap_.at(candidate).map, *target_of(candidate), window_with_structure(w), region.centre,
                             o, options_.filter.likelihood, options_.extras.structure,
@@ -238,12 +232,10 @@ std::uint64_t SegSlam3d::localization_seed(const MatchKey& key) const {
 }
 
 MatchingOptions SegSlam3d::candidate_options(std::size_t candidate) const {
-  // Deviation (candidate_reach.hpp): eq. 18's p(tau^2), the proximity radius and the coarse
-  // search widen with the eq. 13-14 error accumulated since the candidate was left, as sec.
-  // 4.5.2 spreads the localisation filter ("candidate positions at the end of long loops
-  // will be uncertain"). With a fixed 1.5 m sigma, right re-entries after the garage loop
-  // (3-5 m from the map sample's guess) weighed nothing; with a fixed +-2 m search and 4 m
-  // radius they were not reached at all (seed 6, README).
+  // Deviation (candidate_reach.hpp): SegSLAM eq. (18)'s p(tau^2), the proximity radius and the coarse
+  // search widen with the SegSLAM eq. (13)-(14) error accumulated since the candidate was left, as
+  // SegSLAM sec. 4.5.2 spreads the localisation filter ("candidate positions at the end of long
+  // loops will be uncertain"): a fixed sigma and search miss re-entries after a long loop.
   return candidate_reach(options_.segslam.matching, error_since(candidate), options_.segslam.matching.max_search_radius);
 }
 
@@ -299,15 +291,15 @@ double SegSlam3d::error_since(std::size_t candidate) const {
 }
 
 std::optional<MatchingOptions> SegSlam3d::wide_options(double chain_error) const {
-  // Deviation (wide_reentry.hpp): beyond the capped search, a second stage sized by eq. 18's
-  // sigma_tau, accepted only when one pose of it passes the tests (eq. 19's covariance term).
+  // Deviation (wide_reentry.hpp): beyond the capped search, a second stage sized by SegSLAM eq. (18)'s
+  // sigma_tau, accepted only when one pose of it passes the tests (SegSLAM eq. (19)'s covariance term).
   return wide_reach(options_.segslam.matching, chain_error, options_.segslam.matching.max_search_radius, options_.extras.wide);
 }
 
 std::vector<double> SegSlam3d::chain_errors(const std::vector<PlacedSubmap<Pose4>>& sample,
                                             const SegParticle3& p) const {
-  // Sec. 4.5.2: "each transformation in the local map sampling process adds some
-  // uncertainty". A placed frame's is the eq. 13-14 error along the links that composed it:
+  // SegSLAM sec. 4.5.2: "each transformation in the local map sampling process adds some
+  // uncertainty". A placed frame's is the SegSLAM eq. (13)-(14) error along the links that composed it:
   // the particle's own in its open submap, then per link the error inside the submap the
   // link's transform spans (a predecessor's entry-to-exit, or the submap left through its
   // exit), none across a match (the same frame). A re-entry the particle took shortens the

@@ -5,9 +5,8 @@
 // regions (match_regions_unambiguous), each particle taking the answer for its own region.
 //
 // Why: a wide search costs tens of milliseconds (a branch and bound over +-10-25 m and
-// +-0.5-1 rad, four ICP refinements), and at 20 particles the copies of one segment asked
-// for two to three of them per update, from map-sample guesses a few metres apart (seed 1:
-// 84 searches at 32 updates, in 82 distinct guess cells), each covering most of the others'
+// +-0.5-1 rad, four ICP refinements), and the copies of one segment ask for several per
+// update, from map-sample guesses a few metres apart, each covering most of the others'
 // ground. The search does not depend on which particle asks or in which thread: the groups
 // are formed in particle order, their region is the first member's rounded one grown to
 // hold the others'.
@@ -27,9 +26,8 @@ namespace {
 // 0.05 rad) so that particles with nearby guesses ask for the same one. The guess's grid is
 // a whole number of the coarse search's steps (2.4 m for 2.5 m and 0.3 m steps), so that the
 // coarse poses of particles searched together are those each would have searched alone: on
-// grids shifted by a fraction of a step, ICP from the other grid's peak ended at other
-// poses, and an alias one column spacing off passed the tests where it had failed them (20
-// particles, seed 5, sweep 283: taken at 287, the loop lost).
+// grids shifted by a fraction of a step, ICP from the other grid's peak ends at other poses,
+// and an alias one column spacing off may pass the tests.
 WideRegion rounded_region(const Pose4& guess, const MatchingOptions& reach, const WideReentryOptions& w) {
   const LevelPoseGrid coarse = coarse_grid(reach);
   const auto lattice = [](double step, double unit) { return unit * std::max(1.0, std::round(step / unit)); };

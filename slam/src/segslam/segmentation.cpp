@@ -7,7 +7,7 @@ namespace lookahead::slam::segslam {
 
 double motion_error_increment(const Pose2& u, const SegmentationOptions& o) {
   // v_err t ~ distance driven, u_err t ~ angle turned: heading error dominates, so hard
-  // turns favour segmentation (sec. 4.3.1).
+  // turns favour segmentation (SegSLAM sec. 4.3.1).
   return o.slam_factor * (o.alpha_translation * u.norm() + o.alpha_rotation * std::abs(u.theta));
 }
 

@@ -25,23 +25,12 @@ void validate(const WideReentryOptions& w) {
   if (!(w.max_radius >= 0) || !(w.sigmas > 0) || !(w.angle_per_error >= 0) || !(w.max_angle >= 0) ||
       w.peaks < 2 || !(w.separation > 0) || !(w.angle_separation > 0) || !(w.confirm_distance > 0) ||
       !(w.confirm_angle > 0) || !(w.trigger_sigmas > 0 && w.trigger_sigmas <= w.sigmas) || !(w.guess_step > 0) ||
-      !(w.guess_angle_step > 0) || w.retry_updates < 0) {
+      !(w.guess_angle_step > 0)) {
     throw std::invalid_argument(
         "segslam3d wide re-entry: max_radius >= 0, sigmas > 0, angle_per_error >= 0, max_angle >= 0, peaks >= 2, "
         "0 < trigger_sigmas <= sigmas, separation, angle_separation, confirm_distance, confirm_angle, guess_step and "
-        "guess_angle_step > 0, retry_updates >= 0");
+        "guess_angle_step > 0");
   }
-}
-
-bool WideBackoff::allows(std::size_t candidate, std::size_t now) const {
-  return std::none_of(until_.begin(), until_.end(), [&](const auto& u) { return u.first == candidate && now < u.second; });
-}
-
-void WideBackoff::failed(std::size_t candidate, std::size_t now, int retry_updates) {
-  until_.erase(std::remove_if(until_.begin(), until_.end(),
-                              [&](const auto& u) { return u.first == candidate || u.second <= now; }),
-               until_.end());
-  if (retry_updates > 0) until_.emplace_back(candidate, now + static_cast<std::size_t>(retry_updates));
 }
 
 PendingReentry pending_of(std::size_t candidate, const Pose4& match, const Pose4& guess, const Pose4& pose) {

@@ -207,32 +207,5 @@ TEST(WideReentry, RegionsSearchedTogetherAreEachAnsweredFromTheirOwnPeaks) {
   EXPECT_EQ(alone.weight, one.weight);
 }
 
-// A candidate whose wide search found nothing waits retry_updates updates, the others do not;
-// with 0 (the old behaviour) nothing waits; a later failure restarts the wait.
-TEST(WideReentry, BackoffHoldsAFailedCandidateForRetryUpdatesOnly) {
-  WideBackoff b;
-  EXPECT_TRUE(b.allows(3, 100));
-  b.failed(3, 100, 8);
-  EXPECT_FALSE(b.allows(3, 100));
-  EXPECT_FALSE(b.allows(3, 104));  // the next periodic attempt, 4 updates later
-  EXPECT_FALSE(b.allows(3, 107));
-  EXPECT_TRUE(b.allows(3, 108));
-  EXPECT_TRUE(b.allows(4, 101));  // another candidate is not held
-  b.failed(4, 101, 8);
-  b.failed(3, 108, 8);  // searched again at 108, failed again
-  EXPECT_FALSE(b.allows(3, 115));
-  EXPECT_TRUE(b.allows(3, 116));
-  EXPECT_FALSE(b.allows(4, 108));
-  EXPECT_TRUE(b.allows(4, 109));
-  b.failed(3, 116, 0);  // retry_updates 0: at every attempt
-  EXPECT_TRUE(b.allows(3, 116));
-  WideReentryOptions negative;
-  negative.retry_updates = -1;
-  EXPECT_THROW(validate(negative), std::invalid_argument);
-  WideReentryOptions ok;
-  ok.retry_updates = 8;
-  EXPECT_NO_THROW(validate(ok));
-}
-
 }  // namespace
 }  // namespace lookahead::slam::segslam

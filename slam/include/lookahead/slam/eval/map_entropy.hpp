@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Map entropy H(m) = -sum_c [p_c log p_c + (1 - p_c) log(1 - p_c)] over observed cells
-// (SegSLAM, Fairfield et al. 2010, eq. 22; the measure of Stachniss et al.). Natural log.
+// (Fairfield et al. 2010, SegSLAM eq. (22); the measure of Stachniss et al.). Natural log.
 #pragma once
 
 #include "lookahead/slam/io/map_io.hpp"

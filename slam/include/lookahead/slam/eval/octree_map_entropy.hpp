@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Eq. 22 (SegSLAM, Fairfield et al. 2010) on an evidence octree: the binary entropy of every
+// SegSLAM eq. (22) (Fairfield et al. 2010) on an evidence octree: the binary entropy of every
 // observed voxel, times gamma = the voxel volume [nats m^3]. The 3D RBPF's best map is scored
 // with it against SegSLAM's minimum-entropy map sample (OctreeCanvas::entropy, the same sum).
 #pragma once

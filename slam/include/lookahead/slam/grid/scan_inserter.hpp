@@ -25,10 +25,9 @@ struct InsertOptions {
   /// Trace each beam from the laser's true position to its true end point (trace_segment),
   /// not from cell centre to cell centre (trace_cells). A centre-to-centre line that grazes a
   /// wall dips into the wall's row up to 0.5 / slope cells before its end cell, so the far,
-  /// grazing beams of a long corridor erase the wall the near beams mark: on the KTH plans
-  /// (12 m, 720 beams) the corridor walls faded into unknown cells, frontiers lined them, and
-  /// plans went through them. Off by default in `slam` (the log figures were measured
-  /// without it); on in exploration missions.
+  /// grazing beams of a long corridor erase the wall the near beams mark, and a planner then
+  /// goes through it. On in exploration missions; off in `slam`, whose published log
+  /// figures it would change.
   bool exact_rays = false;
 };
 

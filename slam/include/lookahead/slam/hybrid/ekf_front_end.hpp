@@ -2,7 +2,7 @@
 // The EKF local mapper: the front-end of the paper's EKF baseline (HybridSLAM sec. 5.1,
 // filter 2). EKF-SLAM in the local frame with per-scan joint-compatibility association
 // (JCBB), unmatched observations initialised as new features, and the same probability of
-// existence (eq. 11) and culling as the FastSLAM front-end.
+// existence (HybridSLAM eq. (11)) and culling as the FastSLAM front-end.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 // FastSLAM 2.0 with unknown data association (Montemerlo, Thrun et al. 2003/2004), the
-// front-end of HybridSLAM (Brooks & Bailey sec. 2-3, 5.1):
+// front-end of HybridSLAM (Brooks & Bailey, HybridSLAM sec. 2-3, 5.1):
 //  - per particle, each observation's association is *sampled* (data association
 //    sampling) among the gated features, "a new feature" and "spurious", from the
 //    predictive likelihoods under the particle's pose proposal;
 //  - the pose is drawn from the proposal refined by the sampled associations;
-//  - landmark EKFs, a probability of existence per feature (eq. 11), culling;
-//  - correspondence variables kept consistent across particles by weighted vote (sec. 3.1);
-//  - conversion of the particle set to one Gaussian by moment matching (eq. 6-7, sec. 3.2).
+//  - landmark EKFs, a probability of existence per feature (HybridSLAM eq. (11)), culling;
+//  - correspondence variables kept consistent across particles by weighted vote (HybridSLAM sec. 3.1);
+//  - conversion of the particle set to one Gaussian by moment matching (HybridSLAM eq. (6)-(7), HybridSLAM sec. 3.2).
 #pragma once
 
 #include <random>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Probability of existence of a feature (HybridSLAM sec. 5.1 eq. (11), after Stone et al.,
+// Probability of existence of a feature (HybridSLAM sec. 5.1 HybridSLAM eq. (11), after Stone et al.,
 // "Bayesian Multiple Target Tracking"): a detection multiplies the odds by alpha / beta, a
 // missed detection of a feature in view by (1 - alpha) / (1 - beta).
 #pragma once

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// The EKF-SLAM global map of HybridSLAM (Brooks & Bailey sec. 4, after CLSF, Williams et
+// The EKF-SLAM global map of HybridSLAM (Brooks & Bailey, HybridSLAM sec. 4, after CLSF, Williams et
 // al. 2002): the state holds v-, the global pose of the current local map's origin, and the
 // global features. Fusing a local map (a Gaussian in the frame of v-):
-//  1. augmentation by g(v-, x_L) with the Jacobians of g (the covariance of sec. 4),
+//  1. augmentation by g(v-, x_L) with the Jacobians of g (the covariance of HybridSLAM sec. 4),
 //  2. association of the new features with the old ones by joint compatibility (JCBB),
 //  3. fusion of each pair by the zero-noise observation z_f = theta_1 - theta_2 = 0
-//     (eq. 10) and removal of one of the two identical features,
+//     (HybridSLAM eq. (10)) and removal of one of the two identical features,
 //  4. the old origin is replaced by the new vehicle pose: the next local map's origin.
 // With `fusion.relinearise` (beyond the paper) steps 1-3 still choose the pairs, and the
 // map is then the Gauss-Newton solution over all local maps (map_joining.hpp).

@@ -20,7 +20,7 @@ struct LogMappingOptions {
   MotionModelOptions motion;        ///< odometry noise (the RBPF's srr/srt/str/stt model)
   ScanLandmarkOptions landmarks;
 
-  /// The paper's sec. 5 values where they carry over; for a laser's corners and line ends
+  /// HybridSLAM sec. 5 values where they carry over; for a laser's corners and line ends
   /// (seen about half the time, with spurious ones from clutter and people) alpha = 0.5,
   /// beta = 0.1, and fewer particles because a local map stays small.
   static HybridOptions laser_defaults();

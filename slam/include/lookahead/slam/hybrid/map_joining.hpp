@@ -2,7 +2,7 @@
 // The global map as the joint least-squares estimate of every local map fused so far,
 // re-linearised at each fusion (Gauss-Newton), after the iterated sparse local submap
 // joining filter (Huang, Wang & Dissanayake, "Iterated SLSJF", 2008). Beyond HybridSLAM
-// sec. 4, which augments an EKF once per local map and never revisits the linearisation:
+// HybridSLAM sec. 4, which augments an EKF once per local map and never revisits the linearisation:
 // see global_map.cpp for why.
 //
 // Variables: the origins v_1 ... v_K of the local maps after the first (v_0, the start, is

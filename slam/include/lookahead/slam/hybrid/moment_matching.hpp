@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Conversion of the FastSLAM particle set to one Gaussian by moment matching (HybridSLAM
-// eq. (6)-(7)) over the common feature set given by the correspondence variables (sec. 3.2).
+// HybridSLAM eq. (6)-(7)) over the common feature set given by the correspondence variables (HybridSLAM sec. 3.2).
 #pragma once
 
 #include <random>
@@ -12,7 +12,7 @@
 namespace lookahead::slam::hybrid {
 
 /// Probability of existence of every common feature: the weighted sum over particles of
-/// their landmark's existence, a particle without the feature counting 0 (sec. 3.2, last
+/// their landmark's existence, a particle without the feature counting 0 (HybridSLAM sec. 3.2, last
 /// paragraph). Returns (id, existence, holder weight) sorted by id.
 struct CommonFeature {
   long id = -1;
@@ -22,7 +22,7 @@ struct CommonFeature {
 std::vector<CommonFeature> common_features(const std::vector<Particle>& particles);
 
 /// The Gaussian over the vehicle and the common features whose existence exceeds
-/// `min_existence`. Corner cases of sec. 3.2: a particle holding several landmarks with one
+/// `min_existence`. Corner cases of HybridSLAM sec. 3.2: a particle holding several landmarks with one
 /// gamma contributes one of them chosen at random (`rng`); a particle holding none is
 /// ignored for that feature. Weights need not be normalised.
 GaussianMap moment_match(const std::vector<Particle>& particles, double min_existence,

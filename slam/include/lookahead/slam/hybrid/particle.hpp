@@ -24,7 +24,7 @@ struct Particle {
   std::vector<Landmark> landmarks;
 };
 
-/// What one particle did with one observation (the options it votes on, sec. 3.1).
+/// What one particle did with one observation (the options it votes on, HybridSLAM sec. 3.1).
 struct Decision {
   enum class Kind { kSpurious, kAssociated, kCreated };
   Kind kind = Kind::kSpurious;

@@ -16,11 +16,11 @@
 namespace lookahead::slam::hybrid {
 
 struct StudyOptions {
-  /// Clutter levels (sec. 5.1): p(detection) and p(false alarm) per visible feature.
+  /// Clutter levels (HybridSLAM sec. 5.1): p(detection) and p(false alarm) per visible feature.
   std::vector<double> alphas = {1.0, 0.7, 0.4, 0.1};
   std::vector<double> betas = {0.0, 0.02, 0.04, 0.06};
-  int trials = 100;        ///< per filter and level (sec. 5.3)
-  int worlds = 50;         ///< distinct random worlds (sec. 5.2)
+  int trials = 100;        ///< per filter and level (HybridSLAM sec. 5.3)
+  int worlds = 50;         ///< distinct random worlds (HybridSLAM sec. 5.2)
   std::uint64_t seed = 1;  ///< seed of worlds, noise and filters
   int threads = 0;         ///< 0 = all cores
   double failure_sigma = 10.0;   ///< failure rule: Mahalanobis distance [std] ...

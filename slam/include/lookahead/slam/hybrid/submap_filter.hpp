@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The sub-mapping filter of HybridSLAM (Brooks & Bailey sec. 4, Fig. 1): a local front-end
+// The sub-mapping filter of HybridSLAM (Brooks & Bailey, HybridSLAM sec. 4, Fig. 1): a local front-end
 // maps in the frame of the last fusion pose; every `period` seconds its Gaussian (features
 // with existence above the threshold) is fused into the EKF global map and a new local map
 // starts at the vehicle. With a FastSLAM front-end this is HYBRID, with an EKF front-end

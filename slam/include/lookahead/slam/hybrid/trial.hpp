@@ -17,7 +17,7 @@
 
 namespace lookahead::slam::hybrid {
 
-/// The filters of sec. 5.1, plus the adaptive fusion rule.
+/// The filters of HybridSLAM sec. 5.1, plus the adaptive fusion rule.
 enum class FilterKind { kFastSlam, kEkf, kHybrid, kHybridAdaptive };
 inline constexpr FilterKind kAllFilters[] = {FilterKind::kFastSlam, FilterKind::kEkf, FilterKind::kHybrid,
                                              FilterKind::kHybridAdaptive};

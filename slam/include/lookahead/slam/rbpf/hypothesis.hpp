@@ -13,14 +13,14 @@ struct HypothesisMap {
   /// Predicted cells only: a cell is covered by the hypothesis when it is known here. Its
   /// frame is the map frame of the particle it was predicted on (the best one).
   OccupancyGrid grid;
-  /// Similarity Psi (eq. 5) of the registration the hypothesis came from, in [0, 1].
+  /// Similarity Psi (P-SLAM eq. (5)) of the registration the hypothesis came from, in [0, 1].
   double similarity = 0.0;
 };
 
 struct PredictionOptions {
-  /// Use hypotheses in the weights (eq. 21-22). Off: the filter is plain RBPF, bit for bit.
+  /// Use hypotheses in the weights (P-SLAM eq. (21)-(22)). Off: the filter is plain RBPF, bit for bit.
   bool enabled = false;
-  /// hr_Th of the recovery rule (eq. 23): when every particle's hit ratio on the predicted
+  /// hr_Th of the recovery rule (P-SLAM eq. (23)): when every particle's hit ratio on the predicted
   /// beams is below it, the prediction is not used for that scan. The paper gives no value;
   /// 0.5 = at least half the predicted end points must land on a predicted wall.
   double hit_ratio_threshold = 0.5;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The P-SLAM weight split (Chang et al. 2007, eq. 13, 21-23): a scan's end points that land
+// The P-SLAM weight split (Chang et al. 2007, P-SLAM eq. (13), (21)-(23)): a scan's end points that land
 // in cells the particle has explored are z_e, those that land in unexplored cells covered by
 // a hypothesis are z_u. S1(z_e | m) is the filter's usual weight; this file scores
 // S2(z_u | h) with the same likelihood-field model on the hypothesis map, and the hit ratio

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The improved proposal of Grisetti, Stachniss, Burgard (IEEE T-RO 2007), sec. III-A/B:
 // around the scan-matched mode x^ draw K poses x_j, evaluate
-//   tau(x_j) = p(z_t | m, x_j) p(x_j | x_{t-1}, u_t)                        (eq. 11)
+//   tau(x_j) = p(z_t | m, x_j) p(x_j | x_{t-1}, u_t)                        (Grisetti 2007 eq. (11))
 // and fit a Gaussian
-//   mu    = 1/eta sum_j x_j tau(x_j)                                        (eq. 12)
-//   Sigma = 1/eta sum_j tau(x_j) (x_j - mu)(x_j - mu)^T                     (eq. 13)
-//   eta   = sum_j tau(x_j)                                                  (eq. 14)
-// The new pose is sampled from N(mu, Sigma) and the weight is multiplied by eta (eq. 16).
+//   mu    = 1/eta sum_j x_j tau(x_j)                                        (Grisetti 2007 eq. (12))
+//   Sigma = 1/eta sum_j tau(x_j) (x_j - mu)(x_j - mu)^T                     (Grisetti 2007 eq. (13))
+//   eta   = sum_j tau(x_j)                                                  (Grisetti 2007 eq. (14))
+// The new pose is sampled from N(mu, Sigma) and the weight is multiplied by eta (Grisetti 2007 eq. (16)).
 // GMapping's released code takes mu itself instead of sampling; we sample, as published.
 #pragma once
 
@@ -23,7 +23,7 @@ namespace lookahead::slam {
 
 /// How a particle draws its next pose.
 enum class ProposalKind {
-  /// The improved proposal (Grisetti 2007 sec. III-A/B, eq. 11-16): scan match, then sample
+  /// The improved proposal (Grisetti 2007 sec. III-A/B, eq. (11)-(16)): scan match, then sample
   /// the Gaussian fitted around the match; the odometry model where the match fails.
   kScanMatch,
   /// The standard proposal: sample the odometry model, weight by the scan's likelihood

@@ -29,7 +29,7 @@ struct RbpfStatistics {
   std::size_t hypotheses_added = 0;
   std::size_t predicted_updates = 0;  ///< updates with enough end points on a hypothesis
   std::size_t prediction_used = 0;    ///< ... whose S2 entered the weights
-  std::size_t prediction_rejected = 0;  ///< ... dropped by the hit-ratio recovery rule (eq. 23)
+  std::size_t prediction_rejected = 0;  ///< ... dropped by the hit-ratio recovery rule (P-SLAM eq. (23))
 };
 
 class Rbpf {

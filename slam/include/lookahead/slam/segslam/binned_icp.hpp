@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Point-to-line ICP on binned 2D point clouds (Fairfield et al. 2010, sec. 4.5: "ICP on the
+// Point-to-line ICP on binned 2D point clouds (Fairfield et al. 2010, SegSLAM sec. 4.5: "ICP on the
 // octree-binned point clouds ... reduces the influence of point density"; here the bins are
 // the cells of a square grid). Nearest neighbours come from a dense grid of the target's bins.
 #pragma once

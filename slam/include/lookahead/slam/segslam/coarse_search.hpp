@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The coarse search that seeds matching's ICP (sec. 4.5; the deviation is stated in
+// The coarse search that seeds matching's ICP (SegSLAM sec. 4.5; the deviation is stated in
 // grid_submap_ops.cpp): on a grid of poses around a guess, the pose that puts the most
 // window points near a candidate's obstacles (NearField level 0). Two searches that return
 // the same pose: the exhaustive one, and a branch and bound over blocks of 2^h x 2^h

@@ -3,9 +3,7 @@
 // same key meanwhile wait for it instead of computing it again.
 //
 // Why: SegSLAM's particles ask for the same re-entry searches in one update (the match cache);
-// with two threads, both used to run a search the other was already running: 16-17 % more
-// searches than with one thread on MIT CSAIL (20 particles, seeds 1-3: 878 / 916 / 761
-// against 755 / 790 / 653).
+// without it two threads may both run a search the other is already running.
 #pragma once
 
 #include <future>

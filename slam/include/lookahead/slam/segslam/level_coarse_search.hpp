@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The coarse search that seeds SegSLAM 3D matching's ICP (sec. 4.5; the deviations are
+// The coarse search that seeds SegSLAM 3D matching's ICP (SegSLAM sec. 4.5; the deviations are
 // stated in octree_submap_ops.hpp): on a grid of level poses around a guess (x, y, yaw; z
 // stays the guess's), the pose that puts the most window points near a candidate's surfaces
 // in the plane (NearOccupiedField::near_in_plane). The 3D counterpart of coarse_search.hpp,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Local metric map samples (Fairfield et al. 2010, sec. 4.4): submaps of the SegMap placed in
+// Local metric map samples (Fairfield et al. 2010, SegSLAM sec. 4.4): submaps of the SegMap placed in
 // one frame by growing breadth-first from a start submap. Each visited segment contributes
-// one member, drawn at random (eq. 12 combines members of compatible segments freely); a
+// one member, drawn at random (SegSLAM eq. (12) combines members of compatible segments freely); a
 // segment that is not temporally compatible with those already chosen is skipped; the order
 // of expansion within a depth is shuffled ("ties are broken by randomly selecting the
 // order"), so different samples close loops differently. Links followed:
@@ -28,7 +28,7 @@ struct PlacedSubmap {
   int depth = 0;               ///< link steps from the start
   /// The placed submap (index into the sample) it was reached from, and by which link: 0
   /// its predecessor, 1 its successor, 2 its match parent, 3 its match child (-1: the start).
-  /// The chain of links is how its frame was composed (the uncertainty sec. 4.5.2 speaks of).
+  /// The chain of links is how its frame was composed (the uncertainty SegSLAM sec. 4.5.2 speaks of).
   std::size_t from = 0;
   int link = -1;
 };

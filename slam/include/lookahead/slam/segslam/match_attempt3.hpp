@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// One candidate a particle considered for a re-entry (sec. 4.5.1-4.5.2), with what became of
+// One candidate a particle considered for a re-entry (SegSLAM sec. 4.5.1-4.5.2), with what became of
 // it: winnowed by proximity, left out as not among the nearest, or matched (and why the match
 // failed). Recorded only on request (SegSlam3dExtras::record_attempts), for the debug log
 // that checks, against a simulator's ground truth, whether the right re-entry was in reach.
@@ -18,7 +18,7 @@ enum class AttemptOutcome {
   kUnobserved,  ///< near the path, but the candidate observed nothing around the guess
   kNotNearest,  ///< passed proximity, but more than max_candidates were nearer
   kRejected,    ///< matched, and the match failed its tests (`rejection`)
-  kOffered,     ///< matched and offered to the particle (eq. 3)
+  kOffered,     ///< matched and offered to the particle (SegSLAM eq. (3))
   kPending,     ///< matched by the wide stage, to be confirmed at the next attempt
 };
 
@@ -43,7 +43,7 @@ struct MatchAttempt3 {
   double proximity_radius = 0.0;  ///< the radius it was held against [m]
   double search_radius = 0.0;     ///< the coarse search's reach used for it [m]
   double search_angle = 0.0;      ///< ... and in yaw [rad]
-  double error_since = 0.0;       ///< eq. 13-14 error since the candidate was left [m]
+  double error_since = 0.0;       ///< SegSLAM eq. (13)-(14) error since the candidate was left [m]
   double chain_error = 0.0;       ///< ... and along the map sample's links to it (the wide stage's) [m]
   /// The wide stage's radius, reach and yaw reach (wide_reentry.hpp), 0 when it has none.
   double wide_proximity_radius = 0.0, wide_search_radius = 0.0, wide_search_angle = 0.0;

@@ -1,19 +1,16 @@
 // SPDX-License-Identifier: MIT
-// Offline map sampling and the minimum-entropy map (Fairfield et al. 2010, sec. 5.4):
-// many full map samples are grown breadth-first from the particles' submaps (sec. 4.4),
+// Offline map sampling and the minimum-entropy map (Fairfield et al. 2010, SegSLAM sec. 5.4):
+// many full map samples are grown breadth-first from the particles' submaps (SegSLAM sec. 4.4),
 // each is pasted into one grid, and the sample of least entropy
-//   H(theta) = sum over observed cells of gamma H(theta[x, y]),  gamma = cell area  (eq. 20-22)
+//   H(theta) = sum over observed cells of gamma H(theta[x, y]),  gamma = cell area  (SegSLAM eq. (20)-(22))
 // is the SegMap's best global map.
 //
 // Deviation (offline.particle_chain; on in 2D, off in 3D's defaults): the best particle's own
-// chain of submaps, placed as its eq. 11 trajectory places them (a re-entry closes the loop in
+// chain of submaps, placed as its SegSLAM eq. (11) trajectory places them (a re-entry closes the loop in
 // the matched frame), is a candidate too. A breadth-first sample composes each frame along one
 // path through the SegMap and skips the link that closes a loop, so the loop's whole drift
-// shows at that junction, and it mixes members of other particles' lineages; on MIT CSAIL its
-// corridors came out doubled and rotated (20 particles, seeds 1-20: the minimum-entropy
-// sample's path 1.71 m RMSE from the reference after alignment). The particle's chain had the
-// lower entropy in 40 of 40 runs (5 and 20 particles) and its path, the trajectory written,
-// is 0.85 m off at 20 particles; README, "The map a run writes".
+// shows at that junction, and it mixes members of other particles' lineages: long corridors
+// come out doubled. The particle's chain is consistent with the trajectory a run writes.
 #pragma once
 
 #include <cstdint>
@@ -30,26 +27,26 @@ struct MapSample {
   std::size_t particle = 0;                 ///< the particle whose submap the sample grew from
   std::vector<PlacedSubmap<Pose2>> placed;  ///< frames in the first submap's frame when reached
   ProbabilityMap map;
-  double entropy = 0.0;                     ///< eq. 22 [nats m^2]
+  double entropy = 0.0;                     ///< SegSLAM eq. (22) [nats m^2]
   bool chain = false;                       ///< the particle's own chain, not grown breadth-first
 };
 
-/// Eq. 22 with gamma = the cell area: comparable across resolutions [nats m^2].
+/// SegSLAM eq. (22) with gamma = the cell area: comparable across resolutions [nats m^2].
 double scaled_entropy(const ProbabilityMap& map);
 
 /// One full map sample grown from particle `particle`'s open submap.
 MapSample sample_full_map(const SegSlam& filter, std::size_t particle, std::mt19937_64& rng);
 
-/// The map of particle `particle`'s own chain of submaps, each placed where its eq. 11
+/// The map of particle `particle`'s own chain of submaps, each placed where its SegSLAM eq. (11)
 /// trajectory places it (SegSlam::trajectory): the sample whose path is the particle's.
 MapSample particle_chain_sample(const SegSlam& filter, std::size_t particle);
 
-/// Pastes the submaps of `sample.placed` at their frames into `sample.map` and scores it (eq. 22).
+/// Pastes the submaps of `sample.placed` at their frames into `sample.map` and scores it (SegSLAM eq. (22)).
 void paste_sample(const SegSlam& filter, MapSample& sample);
 
 /// The robot's path as the sample places it: each placed submap's own path in its sample
 /// frame, in time order, with an X where a placed submap was a re-entry. What the map of the
-/// sample was built from, so a picture of the two agrees (the best particle's eq. 11 chain may
+/// sample was built from, so a picture of the two agrees (the best particle's SegSLAM eq. (11) chain may
 /// place its submaps differently).
 SegmentedPath sample_paths(const SegSlam& filter, const MapSample& sample);
 

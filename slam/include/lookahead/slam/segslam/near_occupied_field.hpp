@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // What SegSLAM 3D matching asks of a closed submap's voxels, as dense tables over its occupied
-// bounding box (Fairfield et al. 2010, sec. 4.5): is a point near an occupied voxel (the
+// bounding box (Fairfield et al. 2010, SegSLAM sec. 4.5): is a point near an occupied voxel (the
 // coarse search's score and the structure test), has the map observed it at all (the
 // structure test's free space), and the coarse search's bounds over blocks of poses
 // (level_coarse_search.hpp). A closed submap never changes, so matching builds this once per
@@ -24,9 +24,8 @@ class NearOccupiedField {
   explicit NearOccupiedField(const EvidenceOctree& map, const std::vector<int>& bound_widths = {});
   [[nodiscard]] bool near(const Eigen::Vector3d& p) const;
   /// Within one voxel of an occupied one in x and y and kLevelReach voxels in z: the coarse
-  /// search's test, which leaves z to ICP. The map sample's guess was 0.2-0.35 m off in
-  /// height at the garage loop's closure; with the 27-voxel test the floor and ceiling points
-  /// then missed at the right x, y and yaw, and the search found nothing (README).
+  /// search's test, which leaves z to ICP: the map sample's guess may be a few decimetres off
+  /// in height at a loop's closure, and a 27-voxel test then misses the floor and ceiling.
   [[nodiscard]] bool near_in_plane(const Eigen::Vector3d& p) const;
   static constexpr long kLevelReach = 2;
   /// Near an occupied voxel, else known (free), else unknown.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Offline map samples of a 3D SegMap and the minimum-entropy map (Fairfield et al. 2010,
-// sec. 5.4, eq. 20-22), as min_entropy_search.hpp does in 2D: full samples grown breadth-
-// first (sec. 4.4, the generic sample_local_map) from particles drawn by weight, each pasted
+// SegSLAM sec. 5.4, SegSLAM eq. (20)-(22)), as min_entropy_search.hpp does in 2D: full samples grown breadth-
+// first (SegSLAM sec. 4.4, the generic sample_local_map) from particles drawn by weight, each pasted
 // into one octree canvas; the sample of least entropy is the SegMap's best global map. As in
 // 2D (a deviation, min_entropy_search.hpp), the best particle's own chain of submaps is a
 // candidate too (offline.particle_chain).
@@ -19,7 +19,7 @@ namespace lookahead::slam::segslam {
 struct OctreeMapSample {
   std::size_t particle = 0;
   std::vector<PlacedSubmap<Pose4>> placed;  ///< frames in the first submap's frame when reached
-  double entropy = 0.0;                     ///< eq. 22 [nats m^3]
+  double entropy = 0.0;                     ///< SegSLAM eq. (22) [nats m^3]
   EvidenceOctree map;
   bool chain = false;  ///< the particle's own chain, not grown breadth-first
 };
@@ -27,11 +27,11 @@ struct OctreeMapSample {
 /// One full map sample grown from particle `particle`'s open submap.
 OctreeMapSample sample_full_map(const SegSlam3d& filter, std::size_t particle, std::mt19937_64& rng);
 
-/// The map of particle `particle`'s own chain of submaps, each placed where its eq. 11
+/// The map of particle `particle`'s own chain of submaps, each placed where its SegSLAM eq. (11)
 /// trajectory places it (SegSlam3d::trajectory).
 OctreeMapSample particle_chain_sample(const SegSlam3d& filter, std::size_t particle);
 
-/// Pastes the submaps of `sample.placed` at their frames into `sample.map` and scores it (eq. 22).
+/// Pastes the submaps of `sample.placed` at their frames into `sample.map` and scores it (SegSLAM eq. (22)).
 void paste_sample(const SegSlam3d& filter, OctreeMapSample& sample);
 
 /// The robot's pose at every sweep as the sample places it (the placed submaps' path poses,

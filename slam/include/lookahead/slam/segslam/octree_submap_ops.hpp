@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: MIT
-// The map-type-specific operations of SegSLAM (Fairfield et al. 2010, sec. 4.3-4.5, 5.4) for
+// The map-type-specific operations of SegSLAM (Fairfield et al. 2010, SegSLAM sec. 4.3-4.5, 5.4) for
 // the copy-on-write evidence octree and level poses (x, y, z, yaw): the 3D counterpart of
 // grid_submap_ops.hpp. The graph code (SegMap, map samples, trajectory reconstruction, the
-// eq. 3/18 choice, segmentation) is the same generic code the 2D filter uses.
+// SegSLAM eq. (3)/(18) choice, segmentation) is the same generic code the 2D filter uses.
 //   insert / score a sweep   the rbpf3d particle step (ray_insertion, octree_likelihood)
-//   predictive_score         eq. 17 on the look-ahead window
-//   has_observed_near        spatial-proximity winnowing (sec. 4.5.1)
-//   match_window             coarse search + point-to-plane ICP on binned points, eq. 18
-//   add_child_evidence       merging a re-entered submap into its parent (sec. 6)
-//   OctreeCanvas             a map sample's submaps in one octree, eq. 22 entropy
+//   predictive_score         SegSLAM eq. (17) on the look-ahead window
+//   has_observed_near        spatial-proximity winnowing (SegSLAM sec. 4.5.1)
+//   match_window             coarse search + point-to-plane ICP on binned points, SegSLAM eq. (18)
+//   add_child_evidence       merging a re-entered submap into its parent (SegSLAM sec. 6)
+//   OctreeCanvas             a map sample's submaps in one octree, SegSLAM eq. (22) entropy
 #pragma once
 
 #include <cstdint>
@@ -30,7 +30,7 @@ namespace lookahead::slam::segslam {
 /// A look-ahead window's end points in the level frame of the robot at its first sweep
 /// (dead-reckoned; position and yaw of that sweep, no roll or pitch).
 struct SweepWindow {
-  Points3 scored;             ///< a thinned sample for eq. 17 and the coarse search
+  Points3 scored;             ///< a thinned sample for SegSLAM eq. (17) and the coarse search
   Points3 cloud;              ///< every end point, binned, for ICP
   OrientedPoints3 structure;  ///< the cloud's walls, columns and cars (structure_fit.hpp)
 };
@@ -42,12 +42,12 @@ SweepWindow make_sweep_window(const Points3& points, std::size_t scored_points, 
 /// Finds the window's structure points (normals by PCA: the costly part, left for matching).
 void find_structure(SweepWindow& window, const MatchingOptions& options);
 
-/// Eq. 17: the share of the window's scored points that `map` explains (an occupied voxel
+/// SegSLAM eq. (17): the share of the window's scored points that `map` explains (an occupied voxel
 /// among the 27 around the point) with the robot at `pose` at the window's start; -1 when
 /// the window is empty.
 double predictive_score(const EvidenceOctree& map, const Pose4& pose, const SweepWindow& window);
 
-/// Sec. 4.5.1 spatial proximity: does `map` hold observed voxels within `radius` of `p`?
+/// SegSLAM sec. 4.5.1 spatial proximity: does `map` hold observed voxels within `radius` of `p`?
 bool has_observed_near(const EvidenceOctree& map, const Eigen::Vector3d& p, double radius);
 
 /// The coarse search's grid for `options`: steps of 1.5 bins miss no peak, as the near field
@@ -68,24 +68,24 @@ OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptio
 struct WindowMatch3 {
   bool ok = false;
   Pose4 pose;                ///< the robot at the window's start, in the candidate's frame
-  double icp_error = 0.0;    ///< eq. 18 err_ICP: the structure points' mean error [m]
+  double icp_error = 0.0;    ///< SegSLAM eq. (18) err_ICP: the structure points' mean error [m]
   double all_points_error = 0.0;  ///< ICP's mean error over all points, floor and ceiling too [m]
   double translation = 0.0;  ///< tau_m: distance from the guess [m]
-  double weight = 0.0;       ///< eq. 18
+  double weight = 0.0;       ///< SegSLAM eq. (18)
   StructureFit structure;    ///< the window's structure at `pose`
   double guess_score = 0.0;   ///< the coarse search's score (share of points near surfaces) at the guess
   double coarse_score = 0.0;  ///< ... and at its best pose, which seeds ICP
   const char* rejection = "";  ///< why the match failed (empty when ok): for the debug log
   /// Wide re-entry search only (wide_reentry.hpp): distinct poses that passed the tests.
   std::size_t modes = 0;
-  /// Eq. 19's p(|Sigma_X|) when the localisation filter matched (localization_match3.hpp);
-  /// 1 for ICP. The match's weight is this times eq. 18's.
+  /// SegSLAM eq. (19)'s p(|Sigma_X|) when the localisation filter matched (localization_match3.hpp);
+  /// 1 for ICP. The match's weight is this times SegSLAM eq. (18)'s.
   double spread_factor = 1.0;
 };
 
-/// Sec. 4.5: a coarse search (x, y, yaw around `guess`, share of points near occupied voxels)
-/// seeds point-to-plane ICP of the binned window onto the candidate; weighted by eq. 18.
-/// Deviation: eq. 18's err_ICP is the mean error of the window's structure points (walls,
+/// SegSLAM sec. 4.5: a coarse search (x, y, yaw around `guess`, share of points near occupied voxels)
+/// seeds point-to-plane ICP of the binned window onto the candidate; weighted by SegSLAM eq. (18).
+/// Deviation: SegSLAM eq. (18)'s err_ICP is the mean error of the window's structure points (walls,
 /// columns, cars; structure_fit.hpp), not of all points, and a match needs enough of them
 /// fitted (`structure`): floor and ceiling fit a wrong re-entry as well as the right one.
 WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& guess,
@@ -115,15 +115,15 @@ std::vector<WindowMatch3> match_regions(const OctreeMatchTarget& target, const S
                                         const std::vector<LevelSubgrid>& regions, const MatchingOptions& options,
                                         const StructureTestOptions& structure = {});
 /// match_window's ICP from `seed` and its acceptance tests, without the coarse search (its
-/// scores are left 0); tau and the eq. 18 weight are taken against `guess`.
+/// scores are left 0); tau and the SegSLAM eq. (18) weight are taken against `guess`.
 WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& seed,
                           const Pose4& guess, const MatchingOptions& options, const StructureTestOptions& structure = {});
-/// The acceptance tests and eq. 18 weight of the window placed by `fit` (ICP's result, or a
+/// The acceptance tests and SegSLAM eq. (18) weight of the window placed by `fit` (ICP's result, or a
 /// pose found otherwise with point_to_plane_fit's statistics): refine_match after its ICP.
 WindowMatch3 judge_fit(const OctreeMatchTarget& target, const SweepWindow& window, const Icp3Result& fit,
                        const Pose4& guess, const MatchingOptions& options, const StructureTestOptions& structure = {});
 
-/// Sec. 6 merging, as the 2D add_child_evidence: adds to `into` (the parent) the voxels of
+/// SegSLAM sec. 6 merging, as the 2D add_child_evidence: adds to `into` (the parent) the voxels of
 /// `child` (a match copy of it, same frame) that `into` never observed, with the child's
 /// log-odds; voxels the parent observed keep the parent's evidence (the child's revisions of
 /// them are dropped: its copy started from them, so adding would count them twice). Bricks
@@ -140,7 +140,7 @@ class OctreeCanvas {
   explicit OctreeCanvas(const OctreeOptions& options) : options_(options), grid_(options.resolution) {}
   void paste(const EvidenceOctree& map, const Pose4& frame, const EvidenceOctree* pasted_parent = nullptr);
   [[nodiscard]] EvidenceOctree to_octree() const;
-  /// Eq. 22 with gamma = the voxel volume [nats m^3], over every observed voxel.
+  /// SegSLAM eq. (22) with gamma = the voxel volume [nats m^3], over every observed voxel.
   [[nodiscard]] double entropy() const;
   [[nodiscard]] std::size_t voxels() const { return cells_.size(); }
 

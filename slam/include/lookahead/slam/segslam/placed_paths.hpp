@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // A placed set of submaps (a map sample, or a particle's own chain), generic over the map and
-// pose types as map_sampler.hpp is: the chain placed as its eq. 11 trajectory places it, its
+// pose types as map_sampler.hpp is: the chain placed as its SegSLAM eq. (11) trajectory places it, its
 // submaps pasted into one canvas, and the robot's path as the placement puts it (the pieces a
 // picture draws, one pose per scan).
 #pragma once
@@ -18,7 +18,7 @@ namespace lookahead::slam::segslam {
 
 /// A particle's own chain of submaps, from its open submap `open` (placed first, id
 /// kNoSubmap, as a breadth-first sample starts) back to the oldest, each at the frame its
-/// eq. 11 trajectory gives it (chain_frames_with_matches: a re-entry closes the loop in the
+/// SegSLAM eq. (11) trajectory gives it (chain_frames_with_matches: a re-entry closes the loop in the
 /// matched frame), in the frame of the oldest submap.
 template <class Map, class Pose>
 std::vector<PlacedSubmap<Pose>> chain_placement(const SegMap<Map, Pose>& segmap, const Submap<Map, Pose>& open) {

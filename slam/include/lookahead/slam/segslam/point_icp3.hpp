@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// ICP for SegSLAM 3D matching (Fairfield et al. 2010, sec. 4.5: "ICP on octree-binned point
+// ICP for SegSLAM 3D matching (Fairfield et al. 2010, SegSLAM sec. 4.5: "ICP on octree-binned point
 // clouds"): the window's end points, one per bin, aligned to a submap's occupied voxel
 // centres. The transform is level (x, y, z, yaw): submap frames are gravity-aligned.
 //

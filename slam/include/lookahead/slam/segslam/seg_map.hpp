@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The SegMap Theta = {theta_0, theta_1, ...} (Fairfield et al. 2010, sec. 4.1-4.4): every
+// The SegMap Theta = {theta_0, theta_1, ...} (Fairfield et al. 2010, SegSLAM sec. 4.1-4.4): every
 // closed submap, the links between them (temporal predecessor, match parent), and the
 // segments, the groups of particle submaps that share one interval. Submaps of segments
-// that can no longer be part of any reconstructed trajectory are pruned (sec. 4.4,
+// that can no longer be part of any reconstructed trajectory are pruned (SegSLAM sec. 4.4,
 // "non-viable segments").
 #pragma once
 
@@ -45,7 +45,7 @@ class SegMap {
     return static_cast<std::size_t>(std::count_if(submaps_.begin(), submaps_.end(), [](const auto& s) { return s && !s->merged; }));
   }
 
-  /// Merges the stored match child `id` into its parent (sec. 6: "submaps can be quickly
+  /// Merges the stored match child `id` into its parent (SegSLAM sec. 6: "submaps can be quickly
   /// merged by adding the evidence grids when their relative positions become certain"; a
   /// match child shares its parent's frame, so the match gives the relative position):
   /// `add_evidence(parent_map, child_map)` adds what the child observed to the parent's map,
@@ -101,7 +101,7 @@ class SegMap {
 
   /// Keeps the segments reachable from the `roots` (the links of the particles' open
   /// submaps) through predecessor and parent links, with every member of a reachable
-  /// segment (eq. 12 may combine any of them); drops the rest. Returns how many were dropped.
+  /// segment (SegSLAM eq. (12) may combine any of them); drops the rest. Returns how many were dropped.
   std::size_t prune(const std::vector<std::size_t>& roots) {
     std::set<Key> viable;
     std::vector<std::size_t> stack;

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // SegSLAM on 2D laser logs: Fairfield, Kantor, Wettergreen, "Segmented SLAM in
-// three-dimensional environments", J. Field Robotics 27(1), 2010, sec. 4.1. Each particle
+// three-dimensional environments", J. Field Robotics 27(1), 2010, SegSLAM sec. 4.1. Each particle
 // is a pose plus its own open submap; prediction samples the pose with the RBPF's proposal
-// and the submap among {same, new, match} (eq. 3); weighting, resampling and map update are
+// and the submap among {same, new, match} (SegSLAM eq. (3)); weighting, resampling and map update are
 // the RBPF's (rbpf/particle_step.hpp). The filter runs `lookahead_s` behind the newest scan
-// so segmentation (eq. 13-17) and matching (eq. 18) can use the look-ahead window; the
+// so segmentation (SegSLAM eq. (13)-(17)) and matching (SegSLAM eq. (18)) can use the look-ahead window; the
 // estimate is brought to the present by dead reckoning.
 #pragma once
 
@@ -40,7 +40,7 @@ struct SegParticle {
   GridSubmap submap;    ///< the open submap theta_i it maps into
   double log_weight = 0.0;
   int submap_updates = 0;      ///< filter updates in the open submap
-  double motion_error = 0.0;   ///< eq. 13-14, accumulated in the open submap [m]
+  double motion_error = 0.0;   ///< SegSLAM eq. (13)-(14), accumulated in the open submap [m]
   /// err_ICP of the match that opened the submap [m]; infinite for a fresh submap.
   double entry_error = std::numeric_limits<double>::infinity();
 };
@@ -77,10 +77,10 @@ class SegSlam {
   [[nodiscard]] const GridSegMap& segmap() const { return segmap_; }
   [[nodiscard]] std::size_t best_particle() const;
   /// Particle m's pose at its last update in the frame of the first submap (the odometry
-  /// frame of the first scan), by eq. 11 with matches closing loops.
+  /// frame of the first scan), by SegSLAM eq. (11) with matches closing loops.
   [[nodiscard]] Pose2 global_pose(std::size_t m) const;
   /// The weighted mean of the particles' global poses, brought to the newest scan by dead
-  /// reckoning (sec. 4.1, Estimate; sec. 5.2's loop-closure estimate).
+  /// reckoning (SegSLAM sec. 4.1, Estimate; SegSLAM sec. 5.2's loop-closure estimate).
   [[nodiscard]] Pose2 estimate() const;
   /// Particle m's reconstructed trajectory: (scan, pose in the first submap's frame) per update.
   [[nodiscard]] std::vector<std::pair<std::size_t, Pose2>> trajectory(std::size_t m) const;
@@ -111,7 +111,7 @@ class SegSlam {
   /// particles share their history and ask for the same match.
   WindowMatch cached_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w,
                            const MatchingOptions& reach);
-  /// Eq. 13-14 error accumulated since the robot left the candidate [m] (candidate_reach.hpp).
+  /// SegSLAM eq. (13)-(14) error accumulated since the robot left the candidate [m] (candidate_reach.hpp).
   [[nodiscard]] double error_since(std::size_t candidate) const;
   std::uint64_t localization_seed(const std::tuple<std::size_t, long, long, long>& key) const;
 
@@ -126,7 +126,7 @@ class SegSlam {
   std::vector<LaserScan> scans_;
   std::size_t next_pending_ = 0;  ///< the oldest scan not yet considered for an update
   std::size_t last_update_ = 0;   ///< the scan of the last filter update
-  std::vector<double> motion_error_sum_{0.0};  ///< eq. 13-14 error accumulated up to each scan [m]
+  std::vector<double> motion_error_sum_{0.0};  ///< SegSLAM eq. (13)-(14) error accumulated up to each scan [m]
   std::mt19937_64 rng_;
   SegSlamStatistics stats_;
   std::mutex cache_mutex_;

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // SegSLAM on 3D range sweeps with copy-on-write evidence octrees: Fairfield, Kantor,
 // Wettergreen, "Segmented SLAM in three-dimensional environments", J. Field Robotics 27(1),
-// 2010, sec. 4-5. Each particle is a level pose (x, y, z, yaw; roll and pitch are the IMU's)
+// 2010, SegSLAM sec. 4-5. Each particle is a level pose (x, y, z, yaw; roll and pitch are the IMU's)
 // plus its open octree submap; prediction samples the pose with the 3D RBPF's proposal
-// (rbpf3d/motion3_model.hpp) and the submap among {same, new, match} (eq. 3, eq. 18);
+// (rbpf3d/motion3_model.hpp) and the submap among {same, new, match} (SegSLAM eq. (3), SegSLAM eq. (18));
 // weighting and map update are the 3D RBPF's (octree_likelihood, ray_insertion). The
 // SegMap, map samples, segmentation criterion, submap choice and trajectory reconstruction
 // are the generic code of the 2D filter (seg_map.hpp, map_sampler.hpp, segmentation.hpp,
@@ -12,14 +12,14 @@
 //
 // Deviation: the filter loop is a sibling of the 2D SegSlam class, not one template with it:
 // that class is written against laser scans and the 2D particle step; the graph code, the
-// eq. 3/13-14/18 functions and SegMap::merge_into_parent are shared. Locking and merging
-// (sec. 6, the `locking:` options, off by default) follow the 2D filter: seg_slam3d_locking.cpp.
+// SegSLAM eq. (3)/13-14/18 functions and SegMap::merge_into_parent are shared. Locking and merging
+// (SegSLAM sec. 6, the `locking:` options, off by default) follow the 2D filter: seg_slam3d_locking.cpp.
 // Submap frames are level (x, y, z, yaw), and proximity winnowing also bounds the height
 // difference (the garage's decks share x, y). A match is scored on the window's structure
 // points and vetoed when they land in the candidate's free space (structure_fit.hpp), and
-// eq. 18's p(tau^2), the proximity radius and the coarse search widen with the eq. 13-14
+// SegSLAM eq. (18)'s p(tau^2), the proximity radius and the coarse search widen with the SegSLAM eq. (13)-(14)
 // error since the candidate (candidate_reach.hpp); beyond that search's cap a wide search
-// sized by eq. 18's sigma_tau is taken only when unambiguous (wide_reentry.hpp).
+// sized by SegSLAM eq. (18)'s sigma_tau is taken only when unambiguous (wide_reentry.hpp).
 #pragma once
 
 #include <cstddef>
@@ -59,7 +59,7 @@ struct SegSlam3dExtras {
   /// Proximity winnowing also needs the robot within this height of the candidate's path
   /// [m] (the garage's decks are 3 m apart). > 0.
   double proximity_height = 1.0;
-  /// End points of the look-ahead window scored by eq. 17 and the coarse search. >= 10.
+  /// End points of the look-ahead window scored by SegSLAM eq. (17) and the coarse search. >= 10.
   int window_points = 300;
   /// What a match's walls, columns and cars must show (structure_fit.hpp).
   StructureTestOptions structure;
@@ -69,7 +69,7 @@ struct SegSlam3dExtras {
   bool record_attempts = false;
 };
 
-/// The SegSLAM options for 3D sweeps: the 2D defaults with the bins, ICP and eq. 18 scales
+/// The SegSLAM options for 3D sweeps: the 2D defaults with the bins, ICP and SegSLAM eq. (18) scales
 /// of 0.2 m voxels, and the look-ahead and periods of one sweep per second. Mirrored in
 /// config/segslam/garage3d.yaml (a test checks).
 SegSlamOptions segslam3d_defaults();
@@ -85,14 +85,12 @@ struct SegParticle3 {
   OctreeSubmap submap;  ///< the open submap it maps into
   double log_weight = 0.0;
   int submap_updates = 0;       ///< filter updates in the open submap
-  double motion_error = 0.0;    ///< eq. 13-14, accumulated in the open submap [m]
+  double motion_error = 0.0;    ///< SegSLAM eq. (13)-(14), accumulated in the open submap [m]
   int updates_since_match = 0;  ///< since the last matching attempt
   /// err_ICP of the match that opened the submap [m]; infinite for a fresh submap (locking).
   double entry_error = std::numeric_limits<double>::infinity();
   /// A wide re-entry found at the last attempt, checked at the next one (wide_reentry.hpp).
   std::optional<PendingReentry> pending;
-  /// The candidates its wide searches found nothing for, waiting to be searched again.
-  WideBackoff wide_backoff;
 };
 
 /// One match a particle was offered (and, if `chosen`, took): enough to check it against
@@ -101,9 +99,9 @@ struct MatchEvent3 {
   std::size_t sweep = 0;
   std::size_t candidate = 0;
   double weight = 0.0;
-  double icp_error = 0.0;    ///< eq. 18 err_ICP (structure points) [m]
+  double icp_error = 0.0;    ///< SegSLAM eq. (18) err_ICP (structure points) [m]
   double all_points_error = 0.0;  ///< ICP's mean error over all points [m]
-  double translation = 0.0;  ///< eq. 18 tau [m]
+  double translation = 0.0;  ///< SegSLAM eq. (18) tau [m]
   Pose4 pose;                ///< the re-entry pose, in the candidate's frame
   Pose4 guess;               ///< the particle's pose placed there by the map sample
   StructureFit structure;    ///< the window's walls, columns and cars at `pose`
@@ -123,7 +121,7 @@ struct SegSlam3dStatistics {
   /// Capped searches run (seg_slam3d_capped.cpp): each answers the distinct rounded guesses
   /// on one submap at one update, which match_attempts counts one by one.
   std::size_t capped_searches = 0;
-  std::size_t locked = 0;          ///< re-entered submaps locked (localisation only, sec. 6)
+  std::size_t locked = 0;          ///< re-entered submaps locked (localisation only, SegSLAM sec. 6)
   std::size_t locked_updates = 0;  ///< particle updates in a locked submap (no ray insertion)
   std::size_t merged = 0;          ///< closed re-entered submaps merged into their parent
   std::vector<double> neff;
@@ -150,12 +148,12 @@ class SegSlam3d {
   [[nodiscard]] const std::vector<RangeSweep>& sweeps() const { return sweeps_; }
   [[nodiscard]] std::size_t best_particle() const;
   /// Particle m's pose at its last update in the first submap's frame (the odometry frame
-  /// of the first sweep), by eq. 11 with matches closing loops.
+  /// of the first sweep), by SegSLAM eq. (11) with matches closing loops.
   [[nodiscard]] Pose4 global_pose(std::size_t m) const;
   /// The weighted mean of the particles' global poses, brought to the newest sweep by dead
-  /// reckoning (sec. 4.1; sec. 5.2's loop-closure estimate).
+  /// reckoning (SegSLAM sec. 4.1; SegSLAM sec. 5.2's loop-closure estimate).
   [[nodiscard]] Pose4 estimate() const;
-  /// Particle m's reconstructed trajectory (eq. 11): (sweep, pose) per update.
+  /// Particle m's reconstructed trajectory (SegSLAM eq. (11)): (sweep, pose) per update.
   [[nodiscard]] std::vector<std::pair<std::size_t, Pose4>> trajectory(std::size_t m) const;
   /// The same at every sweep fed so far (the look-ahead tail by dead reckoning).
   [[nodiscard]] std::vector<Pose4> trajectory_at_every_sweep(std::size_t m) const;
@@ -172,7 +170,7 @@ class SegSlam3d {
     Pose4 guess;              ///< the map sample's
     MatchingOptions options;  ///< its reach (wide_reach)
     std::size_t attempt = 0;  ///< index into the transition's attempts (record_attempts)
-    double pending_weight = 0.0;  ///< eq. 18 weight of the pending re-entry confirmed this attempt
+    double pending_weight = 0.0;  ///< SegSLAM eq. (18) weight of the pending re-entry confirmed this attempt
     Pose4 pose;               ///< the particle's when it asked
     std::optional<Pose4> carried;  ///< the origin of the fresh submap the particle started since
     bool dropped = false;     ///< the particle took a match since: the re-entry goes nowhere
@@ -189,10 +187,10 @@ class SegSlam3d {
   void update(std::size_t k);
   void run_pending(double lookahead_s);
   SweepWindow window_after(std::size_t sweep) const;
-  /// Eq. 13-14/17 and, when the particle matches at this update, its candidates (and a
+  /// SegSLAM eq. (13)-(14)/17 and, when the particle matches at this update, its candidates (and a
   /// confirmed pending re-entry); their capped searches run after, for all particles at once.
   Transition ask_submap(SegParticle3& p, const SweepWindow& w, std::mt19937_64& rng);
-  /// Eq. 3's draw among the matches offered, and the submap that follows.
+  /// SegSLAM eq. (3)'s draw among the matches offered, and the submap that follows.
   void choose_submap(SegParticle3& p, Transition& t, const SweepWindow& w, std::mt19937_64& rng);
   void advance(SegParticle3& p, const SweepModel& model, std::mt19937_64& rng) const;
   struct Candidate;  // a submap of the particle's map sample left for matching
@@ -236,7 +234,7 @@ class SegSlam3d {
   /// A capped search's key: the submap searched and its region's centre (x, y, z, yaw).
   using MatchKey = std::tuple<std::size_t, long, long, long, long>;
   [[nodiscard]] static MatchKey key_of(std::size_t candidate, const LevelSubgrid& region);
-  /// match_window (or the eq. 19 localisation filter) from the region's centre.
+  /// match_window (or the SegSLAM eq. (19) localisation filter) from the region's centre.
   WindowMatch3 capped_search(std::size_t candidate, const LevelSubgrid& region, const MatchingOptions& o,
                              const SweepWindow& w);
   [[nodiscard]] std::uint64_t localization_seed(const MatchKey& key) const;
@@ -249,7 +247,7 @@ class SegSlam3d {
                                                  const SegParticle3& p) const;
   const SweepWindow& window_with_structure(const SweepWindow& w);
   void store_transitions(std::vector<Transition>& transitions);
-  // Locking and merging (sec. 6; seg_slam3d_locking.cpp).
+  // Locking and merging (SegSLAM sec. 6; seg_slam3d_locking.cpp).
   [[nodiscard]] bool locks_on_entry(double entry_error, std::size_t candidate) const;
   void merge_if_registered(std::size_t id, double entry_error);
   /// The submap holding `id`'s evidence: `id` itself, or for a merged one its parent's.
@@ -261,7 +259,7 @@ class SegSlam3d {
   std::vector<SegParticle3> particles_;
   OctreeSegMap segmap_;
   std::vector<RangeSweep> sweeps_;
-  std::vector<double> motion_error_sum_;  ///< eq. 13-14 error accumulated up to each updated sweep [m]
+  std::vector<double> motion_error_sum_;  ///< SegSLAM eq. (13)-(14) error accumulated up to each updated sweep [m]
   std::size_t next_pending_ = 0;
   std::size_t last_update_ = 0;
   std::mt19937_64 rng_;

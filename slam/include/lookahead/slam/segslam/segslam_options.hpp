@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Every SegSLAM parameter (Fairfield et al. 2010, sec. 4.3-4.5), nested by component. The
+// Every SegSLAM parameter (Fairfield et al. 2010, SegSLAM sec. 4.3-4.5), nested by component. The
 // particle filter steps are the RBPF's and keep their own options (RbpfOptions,
 // config/slam/default.yaml); these are the defaults config/segslam/default.yaml mirrors.
 #pragma once
@@ -8,52 +8,44 @@
 
 namespace lookahead::slam::segslam {
 
-/// Segmentation (sec. 4.3): when a particle starts a new submap.
+/// Segmentation (SegSLAM sec. 4.3): when a particle starts a new submap.
 struct SegmentationOptions {
   /// Look-ahead window [s]: the filter runs this far behind the newest scan, and the
-  /// estimate is brought to the present by dead reckoning (sec. 4.1). 0..60.
+  /// estimate is brought to the present by dead reckoning (SegSLAM sec. 4.1). 0..60.
   double lookahead_s = 3.0;
-  /// Minimum segment size in filter updates (sec. 4.3.2, "a minimum segment size"). >= 1.
+  /// Minimum segment size in filter updates (SegSLAM sec. 4.3.2, "a minimum segment size"). >= 1.
   int min_segment_updates = 10;
-  /// Eq. 13-14: position error grows by alpha_translation per metre and alpha_rotation per
+  /// SegSLAM eq. (13)-(14): position error grows by alpha_translation per metre and alpha_rotation per
   /// radian of dead-reckoned motion [m/m], [m/rad] ...
   double alpha_translation = 0.05;
   double alpha_rotation = 0.3;
-  /// ... times this factor, the expected share left after SLAM corrections (sec. 4.3.1,
+  /// ... times this factor, the expected share left after SLAM corrections (SegSLAM sec. 4.3.1,
   /// "a slightly less pessimistic dead-reckoning error model"). (0, 1].
   /// Deviation (2D default): 1, the 3D filter and the paper's particle step keep 0.5. The
-  /// error also sizes the matching reach and eq. 18's sigma_tau (candidate_reach.hpp): on MIT
-  /// CSAIL a 5-particle filter drifted 3-4 m in its first 150 m, beyond the reach 0.5 gave,
-  /// and runs that missed that first re-entry never closed a loop. Seeds 41-60 (fresh after
-  /// tuning on 1-40): 2.65 m mean final error against 8.63 m with 0.5 (segments of the same
-  /// length: max_motion_error 8 against 4; README, "Loop closure on MIT CSAIL").
+  /// error also sizes the matching reach and SegSLAM eq. (18)'s sigma_tau (candidate_reach.hpp):
+  /// a few-particle filter drifts beyond the reach 0.5 gives before its first re-entry.
   double slam_factor = 1.0;
   /// Segment when the estimated error in the submap reaches this [m]. > 0.
-  /// Deviation (2D default): 4 m, not the 1 m of the paper's particle step (the standard
-  /// proposal; config/segslam/standard_proposal.yaml): the RBPF's scan-matching proposal
-  /// leaves far less error than eq. 13-14 models, and every fresh submap forgets the walls
-  /// the scan matcher needs. MIT CSAIL, 5 particles, 20 seeds, slam_factor 0.5, reach up to
-  /// 10 m: final error 1.7 m mean at 4 m against 2.4 / 4.0 m at 3 / 6 m (README, "Loop closure
-  /// on MIT CSAIL"); 8 m with slam_factor 1 is the same segment length.
+  /// Deviation (2D default): 8 m at slam_factor 1 (4 m at 0.5), not the 1 m of the paper's
+  /// particle step (proposal.kind: motion_model): the scan-matching proposal leaves far less
+  /// error than SegSLAM eq. (13)-(14) models, and a fresh submap forgets the walls the matcher needs.
   double max_motion_error = 8.0;
-  /// Eq. 17: segment when the predictive score of the look-ahead window (mean share of its
+  /// SegSLAM eq. (17): segment when the predictive score of the look-ahead window (mean share of its
   /// end points the submap explains) falls below this. 0..1; 0 disables the criterion.
   /// Deviation (2D default): off. Indoors it segments at every room and corner, and each
-  /// segment must be re-entered to keep the map whole: on MIT CSAIL (5 particles, 20 seeds,
-  /// reach up to 10 m) 0.2 and 0.35 gave 11.7 m and 12.7 m mean final error against 1.7 m
-  /// with it off. The paper's particle step (standard_proposal.yaml) and the 3D filter keep 0.5.
+  /// segment must then be re-entered to keep the map whole. The paper and the 3D filter use 0.5.
   double predictive_threshold = 0.0;
-  /// Window scans scored by eq. 17 (evenly spread; bounds the cost). >= 1.
+  /// Window scans scored by SegSLAM eq. (17) (evenly spread; bounds the cost). >= 1.
   int predictive_scans = 4;
 };
 
-/// Matching (sec. 4.5): when a particle re-enters an old submap.
+/// Matching (SegSLAM sec. 4.5): when a particle re-enters an old submap.
 struct MatchingOptions {
   /// Try matching every this many filter updates (and at every segmentation). >= 1.
   int period_updates = 4;
-  /// Submaps placed in a local metric map sample (sec. 4.4). >= 2.
+  /// Submaps placed in a local metric map sample (SegSLAM sec. 4.4). >= 2.
   std::size_t sample_submaps = 40;
-  /// Winnowing (sec. 4.5.1): a candidate must have ended this long ago [s] ...
+  /// Winnowing (SegSLAM sec. 4.5.1): a candidate must have ended this long ago [s] ...
   double min_separation_s = 30.0;
   /// ... and the robot, placed in its frame by the map sample, must be this near its path [m].
   double proximity_radius = 3.0;
@@ -66,22 +58,21 @@ struct MatchingOptions {
   /// basin; the paper's localisation filter covers this with its initial spread).
   double search_radius = 2.0;
   double search_angle = 0.25;
-  /// The coarse search, the proximity radius and eq. 18's sigma_tau widen with the eq. 13-14
-  /// error accumulated since the candidate was left, the search up to this [m]
+  /// The coarse search, the proximity radius and SegSLAM eq. (18)'s sigma_tau widen with the
+  /// SegSLAM eq. (13)-(14) error accumulated since the candidate was left, the search up to this [m]
   /// (candidate_reach.hpp; both filters; the 3D's --max-search-radius overrides it). >= 0.
-  /// 2D default 10 m (the 3D filter's 6 m, where its wide stage reaches beyond): on MIT CSAIL
-  /// seeds 1-40, 5 particles, 2.52 m mean final error against 2.85 m with 6 m.
+  /// 2D default 10 m; the 3D filter's 6 m, where its wide stage reaches beyond.
   double max_search_radius = 10.0;
   int icp_iterations = 30;
   double icp_max_distance = 0.4;  ///< correspondences farther than this are outliers [m]
-  /// Eq. 18: p(err_ICP) = exp(-err^2 / 2 sigma^2) with the mean nearest-neighbour error ...
+  /// SegSLAM eq. (18): p(err_ICP) = exp(-err^2 / 2 sigma^2) with the mean nearest-neighbour error ...
   double icp_sigma = 0.05;
   /// ... and p(tau^2) = exp(-tau^2 / 2 sigma_tau^2) on the correction's translation [m].
   double translation_sigma = 1.5;
   /// The null match (keep / start a fresh submap) weighs as much as a match with this error.
   double null_error = 0.08;
-  /// Match by a separate localisation particle filter weighted by eq. 19 instead of ICP
-  /// weighted by eq. 18 (sec. 4.5.2).
+  /// Match by a separate localisation particle filter weighted by SegSLAM eq. (19) instead of
+  /// ICP weighted by SegSLAM eq. (18) (SegSLAM sec. 4.5.2).
   bool use_localization_filter = false;
   /// Particles of that filter, spread over the coarse-search extent around the guess. >= 10
   int localization_particles = 200;
@@ -95,18 +86,16 @@ struct MatchingOptions {
   /// wide re-entry search (wide_reentry.hpp) runs on the first copy only, once per update for
   /// all the particles that ask (over a square covering their regions, seg_slam3d_wide.cpp),
   /// and each particle confirms the re-entry on its own copy at its next attempt. false: every
-  /// particle searches its own copy (the wide search once per copy). Deviation (speed; the paper matches each particle's candidate): on the garage
-  /// loop all 20 particles searched their copies of one segment at the same update (seed 1: 260
-  /// wide searches of 210 copies at 32 segment-updates, 311 of 319 finding nothing); the copies
-  /// differ only by the particles' noise inside one segment, and eq. 12 treats them as
-  /// interchangeable too.
+  /// particle searches its own copy (the wide search once per copy), as the paper does.
+  /// Deviation (speed): the copies differ only by the particles' noise inside one segment,
+  /// and SegSLAM eq. (12) treats them as interchangeable too.
   bool share_by_segment = true;
 };
 
-/// Locking and merging (sec. 6; the paper gives the ideas, not the criteria). Deviation:
+/// Locking and merging (SegSLAM sec. 6; the paper gives the ideas, not the criteria). Deviation:
 /// "well known" and "relative position certain" are both judged by the ICP error of the
-/// match that re-entered the submap. Off by default: on the Intel loop neither lowers the
-/// loop-closure error (README, SegSLAM).
+/// match that re-entered the submap. Off by default: neither lowered the loop-closure error
+/// on the Intel loop; the paper's method for reproducing it.
 struct LockingOptions {
   /// Lock a particle's re-entered submap (localise in the matched map, write nothing) ...
   bool lock = false;
@@ -121,12 +110,12 @@ struct LockingOptions {
   double merge_max_error = 0.08;
 };
 
-/// Offline map sampling (sec. 5.4).
+/// Offline map sampling (SegSLAM sec. 5.4).
 struct OfflineOptions {
   /// Full map samples searched for the minimum-entropy map. >= 1; 0 with particle_chain:
   /// the best particle's chain is the map, no sample is drawn.
   int map_samples = 30;
-  /// The best particle's own chain of submaps (the map of its eq. 11 trajectory) is a
+  /// The best particle's own chain of submaps (the map of its SegSLAM eq. (11) trajectory) is a
   /// candidate of the search too (a deviation: min_entropy_search.hpp). Off in 3D's defaults.
   bool particle_chain = true;
 };

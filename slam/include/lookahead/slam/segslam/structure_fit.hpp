@@ -3,10 +3,9 @@
 // look-ahead window fit those of the candidate submap at the matched pose.
 //
 // Why: most of a sweep's points are floor and ceiling, which a level transform fits equally
-// well at any x, y and yaw. Scored over all points, the mean ICP error of eq. 18 (Fairfield
-// et al. 2010, sec. 4.5) is the same for a right and a wrong re-entry; on the garage loop
-// most accepted matches were metres and tenths of a radian off with the same err_ICP as the
-// right ones (README, SegSLAM on octree submaps). Only points whose surface is not
+// well at any x, y and yaw. Scored over all points, the mean ICP error of SegSLAM eq. (18)
+// (SegSLAM sec. 4.5) is the same for a right and a wrong re-entry metres and tenths of a
+// radian off. Only points whose surface is not
 // horizontal say where along an aisle and at which yaw the window sits.
 #pragma once
 
@@ -48,7 +47,7 @@ struct StructureTestOptions {
   double min_inlier_ratio = 0.15;  ///< share of them with a corresponding surface. 0..1
   /// Share of them that may land where the candidate saw free space: a right re-entry puts
   /// surfaces where the candidate saw surfaces or nothing, not where its beams passed
-  /// (right re-entries 0-0.02, wrong ones mostly above 0.07 on --data-seed 2). 0..1
+  /// (right re-entries show 0-0.02 on the garage, wrong ones mostly above 0.07). 0..1
   double max_free_ratio = 0.05;
 };
 

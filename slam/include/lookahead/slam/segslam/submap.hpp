@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // A SegSLAM submap (Fairfield, Kantor, Wettergreen, "Segmented SLAM in three-dimensional
-// environments", J. Field Robotics 2010, sec. 4.4 and Table I): a map, its interval
+// environments", J. Field Robotics 2010, SegSLAM sec. 4.4 and Table I): a map, its interval
 // (t_s, t_e), the particle's entry and exit poses T_s, T_e in the submap's own frame, the
 // submap the particle came from (temporal predecessor) and, for a match, the parent it was
 // copied from (copy-on-write: the child shares the parent's map and stores only changes).
@@ -45,10 +45,10 @@ struct Submap {
   Map map;
   /// The particle's poses at its filter updates inside the interval (scan, pose in frame).
   std::vector<std::pair<std::size_t, Pose>> path;
-  /// Locked (sec. 6: "well-known segments can be locked to prevent updates, such that
+  /// Locked (SegSLAM sec. 6: "well-known segments can be locked to prevent updates, such that
   /// particles that reenter those segments perform localization"): `map` is never written.
   bool locked = false;
-  /// Merged into its parent (sec. 6): its evidence went into the parent's map and `map` was
+  /// Merged into its parent (SegSLAM sec. 6): its evidence went into the parent's map and `map` was
   /// dropped; interval, poses and links stay, so trajectories still pass through it.
   bool merged = false;
   /// Re-entries merged into this submap so far (how well known it is).

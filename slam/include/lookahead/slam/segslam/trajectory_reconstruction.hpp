@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Reconstructed trajectories (Fairfield et al. 2010, eq. 11-12): a chain of temporally
+// Reconstructed trajectories (Fairfield et al. 2010, SegSLAM eq. 11-12): a chain of temporally
 // sequential submaps, each with its path in its own frame, brought into the frame of the
 // first one by composing exit and entry transforms,
 //   x_t = concatenate(x[1], T[1]-> T->[2] x[2], ...),   T[i]-> = T_e(i), T->[j] = T_s(j)^-1.
-// Eq. 12 is the same composition over members of different particles' compatible segments.
+// SegSLAM eq. (12) is the same composition over members of different particles' compatible segments.
 #pragma once
 
 #include <algorithm>
@@ -66,7 +66,7 @@ const Submap<Map, Pose>* frame_root(const SegMap<Map, Pose>& segmap, const Subma
   return r;
 }
 
-/// Eq. 11 frames for a particle's chain, except that a submap re-entered by a match takes
+/// SegSLAM eq. (11) frames for a particle's chain, except that a submap re-entered by a match takes
 /// the frame its parent already has in the chain: the loop closes there (the jump a picture
 /// marks with an X), and the rest of the chain follows from the matched frame.
 template <class Map, class Pose>
@@ -80,7 +80,7 @@ std::vector<Pose> chain_frames_with_matches(const SegMap<Map, Pose>& segmap,
     const auto* root = frame_root(segmap, *chain[i]);
     bool matched = false;
     for (const auto& [r, rf] : placed_roots) {
-      // Members of one segment are interchangeable (eq. 12): a match into another particle's
+      // Members of one segment are interchangeable (SegSLAM eq. (12)): a match into another particle's
       // copy of a segment this chain went through closes the loop the same way.
       if (r->interval == root->interval) f = rf, matched = true;
     }

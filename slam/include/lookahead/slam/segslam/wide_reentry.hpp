@@ -1,33 +1,33 @@
 // SPDX-License-Identifier: MIT
 // The wide re-entry search of SegSLAM 3D: a second matching stage for a candidate whose
 // position in the map sample is more uncertain than the capped search covers, accepted only
-// when it is unambiguous (Fairfield et al. 2010, sec. 4.5.2, eq. 19).
+// when it is unambiguous (Fairfield et al. 2010, SegSLAM sec. 4.5.2, eq. 19).
 //
-// Why: at the garage loop's end a single particle's map sample places the start area 8-26 m
-// and 0.2-0.8 rad off the truth (1 particle, seeds 1, 4, 6, 7, 8; README), beyond the capped
-// +-6 m / 0.4 rad search of candidate_reach.hpp, so the loop stays open. A blindly wider
-// search finds wrong re-entries: the garage repeats its columns about 9 m apart, and a shift
-// by one spacing fits the structure test as well as the right pose (seed 4, sweep 229).
+// Why: at the garage loop's end a few-particle filter's map sample may place the start area
+// tens of metres and most of a radian off, beyond the capped +-6 m / 0.4 rad search of
+// candidate_reach.hpp, so the loop stays open. A blindly wider search finds wrong re-entries:
+// the garage repeats its columns about 9 m apart, and a shift by one spacing fits the
+// structure test as well as the right pose.
 //
-// What the paper does: sec. 4.5.2 sizes its localisation filter's initial spread by the
+// What the paper does: SegSLAM sec. 4.5.2 sizes its localisation filter's initial spread by the
 // uncertainty the map sample accumulates ("candidate positions at the end of long loops will
-// be uncertain"), and eq. 19 weighs the match by p(|Sigma_X|), the determinant of the filter's
+// be uncertain"), and SegSLAM eq. (19) weighs the match by p(|Sigma_X|), the determinant of the filter's
 // final covariance: a filter left spread over two places weighs little. Deviation, as the
-// localisation filter is not in 3D: the search region is sized by eq. 18's sigma_tau =
-// hypot(translation_sigma, e), e the eq. 13-14 error along the map sample's links that placed
+// localisation filter is not in 3D: the search region is sized by SegSLAM eq. (18)'s sigma_tau =
+// hypot(translation_sigma, e), e the SegSLAM eq. (13)-(14) error along the map sample's links that placed
 // the candidate (SegSlam3d::chain_errors), `sigmas` of them (where p(tau^2) leaves weight),
 // and a yaw reach grown with the same error; the stage runs only where `trigger_sigmas` of
 // them exceed the capped search, and there only after it found nothing;
 // the coarse search's distinct peaks in that region are each refined by ICP and tested, and
 // the match stands only when exactly one distinct pose passes. Two passing poses are the two
-// modes eq. 19's covariance would see: the match is rejected ("ambiguous") rather than drawn.
+// modes SegSLAM eq. (19)'s covariance would see: the match is rejected ("ambiguous") rather than drawn.
 // An unambiguous wide match is not offered at once either: it is kept as the particle's
-// pending re-entry and offered (eq. 3, weighted by eq. 18) only when the next matching
+// pending re-entry and offered (SegSLAM eq. (3), weighted by SegSLAM eq. (18)) only when the next matching
 // attempt, a window later, finds the window's pose by ICP where that re-entry predicts it.
 // On the garage a wrong re-entry one column spacing off passes the tests for one window (seed
-// 1, 1 particle, sweep 229: 12 m off, eq. 18 weight above the null match's) and fails the next.
+// 1, 1 particle, sweep 229: 12 m off, SegSLAM eq. (18) weight above the null match's) and fails the next.
 // A confirmed re-entry stays pending and is offered again at every attempt whose window
-// confirms it: its eq. 18 weight is low where the guess is far (tau 10-19 m against sigma_tau
+// confirms it: its SegSLAM eq. (18) weight is low where the guess is far (tau 10-19 m against sigma_tau
 // 8 m: 0.03-0.06 against the null match's 0.28), so one offer is rarely taken.
 #pragma once
 
@@ -46,8 +46,8 @@ namespace lookahead::slam::segslam {
 struct WideReentryOptions {
   /// Cap of the wide search's reach [m]; 0 turns the wide stage off.
   double max_radius = 25.0;
-  /// The reach is this many of eq. 18's sigma_tau = hypot(translation_sigma, e). > 0. The
-  /// single particle's guesses were up to 2.6 e off on the garage loop (--data-seed 1 and 2).
+  /// The reach is this many of SegSLAM eq. (18)'s sigma_tau = hypot(translation_sigma, e). > 0
+  /// (a single particle's guesses come within about 2.6 e).
   double sigmas = 3.0;
   /// The stage runs only where this many sigma_tau exceed the capped search (it leaves a
   /// share of p(tau^2) out worth the cost). 0 < trigger_sigmas <= sigmas.
@@ -58,11 +58,11 @@ struct WideReentryOptions {
   /// grids of particles searched together coincide (seg_slam3d_wide.cpp).
   double guess_step = 2.5;
   double guess_angle_step = 0.2;
-  /// Yaw reach hypot(search_angle, angle_per_error e) [rad per m of eq. 13-14 error], capped
-  /// at max_angle [rad]. The eq. 13-14 error is a position error; the heading error that a
+  /// Yaw reach hypot(search_angle, angle_per_error e) [rad per m of SegSLAM eq. (13)-(14) error], capped
+  /// at max_angle [rad]. The SegSLAM eq. (13)-(14) error is a position error; the heading error that a
   /// gyro bias leaves is not in it, and at a loop's end (near its start) a heading error moves
-  /// the guess little, so the yaw reach has its own rate: the single particle's guesses at the
-  /// capped search's code were at most 0.09 rad off per m of that error (--data-seed 1 and 2).
+  /// the guess little, so the yaw reach has its own rate (a single particle's guesses come
+  /// within about 0.09 rad per m of that error).
   double angle_per_error = 0.1;
   double max_angle = 1.0;
   /// Distinct coarse peaks refined by ICP and tested. >= 2.
@@ -74,28 +74,6 @@ struct WideReentryOptions {
   /// predicted one [m], [rad].
   double confirm_distance = 0.5;
   double confirm_angle = 0.08;
-  /// After a wide search of a candidate found nothing, the particle searches that candidate
-  /// widely again only this many filter updates later; 0 at every attempt. >= 0.
-  /// Deviation (not in the paper, whose localisation filter runs once per re-entry decision):
-  /// on the garage loop the stage searched the same candidate at every attempt, 4 updates
-  /// (about 4 m of travel) apart, most of them failing while the robot was still 4-20 m from
-  /// the candidate's mapped area (1 particle, seed 1: 18 wide searches of one candidate, all
-  /// failed); the region a search covers (3 sigma_tau, 12-25 m) moves little between attempts.
-  int retry_updates = 0;
-};
-
-/// A particle's wide searches that found nothing, per candidate: the update from which that
-/// candidate may be searched widely again (WideReentryOptions::retry_updates).
-class WideBackoff {
- public:
-  /// May `candidate` be searched widely at update `now`?
-  [[nodiscard]] bool allows(std::size_t candidate, std::size_t now) const;
-  /// A wide search of `candidate` at update `now` found nothing: wait `retry_updates` (the
-  /// entries whose wait is over are dropped, so the list stays a few candidates long).
-  void failed(std::size_t candidate, std::size_t now, int retry_updates);
-
- private:
-  std::vector<std::pair<std::size_t, std::size_t>> until_;  ///< (candidate, first update allowed)
 };
 
 /// An unambiguous wide match waiting for the next attempt's confirmation: the frames of the
@@ -104,7 +82,7 @@ class WideBackoff {
 struct PendingReentry {
   std::size_t candidate = 0;
   Pose4 frame;        ///< by the match
-  Pose4 guess_frame;  ///< by the map sample, for eq. 18's tau
+  Pose4 guess_frame;  ///< by the map sample, for SegSLAM eq. (18)'s tau
 };
 
 /// The pending re-entry of a particle at `pose` in its submap that the wide stage matched to
@@ -121,9 +99,9 @@ bool confirms(const Pose4& predicted, const Pose4& found, const WideReentryOptio
 /// Throws std::invalid_argument on impossible options.
 void validate(const WideReentryOptions& options);
 
-/// The wide stage's options for a candidate left `error_since` [m] of eq. 13-14 error ago, or
+/// The wide stage's options for a candidate left `error_since` [m] of SegSLAM eq. (13)-(14) error ago, or
 /// nothing when trigger_sigmas sigma_tau do not exceed `narrow_cap` (the capped search of
-/// candidate_reach covers most of p(tau^2)) or the stage is off. Eq. 18's sigma_tau is candidate_reach's; the proximity
+/// candidate_reach covers most of p(tau^2)) or the stage is off. SegSLAM eq. (18)'s sigma_tau is candidate_reach's; the proximity
 /// radius grows by as much as the search's reach.
 std::optional<MatchingOptions> wide_reach(const MatchingOptions& base, double error_since, double narrow_cap,
                                           const WideReentryOptions& wide);
@@ -144,14 +122,12 @@ using WideRegion = LevelSubgrid;
 /// One wide search for several particles' regions of one candidate, on the grid of
 /// covering_subgrid(regions): per region its own distinct coarse peaks (level_search_peaks_within:
 /// the regions share the scores and bounds), each pose refined by ICP at most once, and
-/// match_window_unambiguous's answer among them (tau and the eq. 18 weight taken from the
+/// match_window_unambiguous's answer among them (tau and the SegSLAM eq. (18) weight taken from the
 /// region's centre with `options`' sigma). With one region it is match_window_unambiguous
 /// bit for bit. (The peaks of the covering square alone would not do: its best four may all
-/// lie outside a region, which then sees one alias and no right pose to make it ambiguous;
-/// 20 particles, seed 5: a match 12 m off taken at sweep 287.)
-/// Why: at 20 particles the copies of one segment asked for 2-3 wide searches per update
-/// from guesses a few metres apart (20 particles, seed 1: 84 searches at 32 updates, 82
-/// distinct guess cells), each as costly as one over all of them.
+/// lie outside a region, which then sees one alias and no right pose to make it ambiguous.)
+/// Why: the copies of one segment ask for several wide searches per update from guesses a
+/// few metres apart, each as costly as one over all of them.
 std::vector<WindowMatch3> match_regions_unambiguous(const OctreeMatchTarget& target, const SweepWindow& window,
                                                     const std::vector<WideRegion>& regions,
                                                     const MatchingOptions& options,
