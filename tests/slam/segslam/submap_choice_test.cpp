@@ -46,7 +46,7 @@ TEST(SubmapChoice, MatchWeightPrefersSmallErrorAndSmallTransforms) {
 // segment size holds every criterion back; a predictive-score drop segments.
 TEST(Segmentation, CriterionOnConstructedMotionErrors) {
   SegmentationOptions o;
-  o.predictive_threshold = 0.5;  // the paper's particle step (standard_proposal.yaml); off in the 2D defaults
+  o.predictive_threshold = 0.5;  // the paper's value; off in the 2D defaults
   const double straight = motion_error_increment({0.5, 0, 0}, o);
   const double turn = motion_error_increment({0.1, 0, 1.2}, o);
   EXPECT_GT(turn, straight);

@@ -24,11 +24,10 @@
 // An unambiguous wide match is not offered at once either: it is kept as the particle's
 // pending re-entry and offered (SegSLAM eq. (3), weighted by SegSLAM eq. (18)) only when the next matching
 // attempt, a window later, finds the window's pose by ICP where that re-entry predicts it.
-// On the garage a wrong re-entry one column spacing off passes the tests for one window (seed
-// 1, 1 particle, sweep 229: 12 m off, SegSLAM eq. (18) weight above the null match's) and fails the next.
-// A confirmed re-entry stays pending and is offered again at every attempt whose window
-// confirms it: its SegSLAM eq. (18) weight is low where the guess is far (tau 10-19 m against sigma_tau
-// 8 m: 0.03-0.06 against the null match's 0.28), so one offer is rarely taken.
+// On the garage a wrong re-entry one column spacing off can pass the tests for one window
+// and fails the next. A confirmed re-entry stays pending and is offered again at every
+// attempt whose window confirms it: its SegSLAM eq. (18) weight is low where the guess is far
+// (tau well above sigma_tau), so one offer is rarely taken.
 #pragma once
 
 #include <cstddef>
