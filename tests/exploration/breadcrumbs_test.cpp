@@ -123,7 +123,7 @@ TEST(SelectEscape, TheTrailLeadsOutThroughTheDoorTheMarginClosed) {
   EXPECT_EQ(select_escape(in, inside).outcome, SelectionOutcome::kUnreachable);
 }
 
-// The squeeze rule (mission.squeeze): the 0.3 m door the 0.18 m inflation closes is open to
+// The squeeze rule (Mission::squeeze, the last resort): the 0.3 m door the 0.18 m inflation closes is open to
 // a 0.1 m body, so a plan on the map inflated by the body alone reaches the right room.
 TEST(Squeeze, TheDoorTheMarginClosedIsOpenToTheBody) {
   const OccupancyGrid map = two_rooms();
