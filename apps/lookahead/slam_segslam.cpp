@@ -106,7 +106,7 @@ int run_segslam(const SegSlamArgs& a) {
   std::filesystem::create_directories(a.out);
   slam::write_map(best.best.map, a.out, "map");
   write_trajectory_files(a.out, "trajectory", log, filter.trajectory_at_every_scan(filter.best_particle()));
-  // The path the map was pasted from (bench/segslam/csail_error.py --global scores maps by it).
+  // The path the map was pasted from (bench/runs/csail_error.py --global scores maps by it).
   write_trajectory_files(a.out, "map_trajectory", log, slam::segslam::sample_trajectory_at_every_scan(filter, best.best));
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.scans) odometry.push_back(s.odometry);
@@ -131,9 +131,8 @@ int run_segslam(const SegSlamArgs& a) {
   j["chain_entropy_nats_m2"] = best.chain_entropy;  // 0 with offline.particle_chain off
   j["map_is_particle_chain"] = best.best.chain;
   j["map_particle"] = best.best.particle;
-  j["parameters_yaml"] = slam::dump_rbpf_options(rbpf);
-  j["segslam_parameters_yaml"] = slam::dump_segslam_options(options);
-  std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
+  write_run_json(a.out, j, rbpf.threads,
+                 slam::dump_rbpf_options(rbpf) + "segslam:\n" + indent(slam::dump_segslam_options(options)));
   spdlog::info("done: filter {:.1f} s, offline search {:.1f} s ({} samples{}, min entropy {:.1f}{}); {} segments, {} matches; wrote {}/map.png",
                filter_s, offline_s, best.entropies.size(), options.offline.particle_chain ? " and the best particle's chain" : "",
                best.best.entropy, best.best.chain ? ", the chain's" : "", filter.segmap().segment_count(),
