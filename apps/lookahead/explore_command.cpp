@@ -40,7 +40,7 @@ struct ExploreArgs {
   bool predict = false;
   double laser_range = 0.0;
   double laser_fov_deg = 0.0;
-  int threads = 0;
+  std::optional<int> threads;  ///< unset: the config's slam.filter.threads
   double robot_radius = 0.0;
 };
 
@@ -57,7 +57,7 @@ exploration::MissionOptions mission_options(const ExploreArgs& a) {
   if (a.coverage_goal) o.coverage_goal = *a.coverage_goal;
   if (a.laser_range > 0) o.laser.max_range = a.laser_range;
   if (a.laser_fov_deg > 0) o.laser.fov = a.laser_fov_deg * M_PI / 180.0;
-  o.slam.threads = a.threads;
+  if (a.threads) o.slam.threads = *a.threads;
   if (a.robot_radius > 0) o.robot.radius = a.robot_radius;
   if (a.pose == std::string("truth")) o.pose_source = exploration::PoseSource::kTruth;
   else if (a.pose == std::string("slam")) o.pose_source = exploration::PoseSource::kSlam;
@@ -115,7 +115,7 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--laser-range", a->laser_range, "sensor range [m] (default 8, a SICK LMS-200 in Stage)");
   app.add_option("--laser-fov", a->laser_fov_deg, "sensor field of view [deg] (default 180)");
   app.add_option("--robot-radius", a->robot_radius, "robot disc radius [m] (default 0.25, a Pioneer 3-DX)");
-  app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores")->capture_default_str();
+  app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores (default: slam.filter.threads)");
   app.add_option("--start", a->start, "start pose x y theta (default: the world's)")->expected(3);
   app.add_option("--strategy", a->strategy, "nearest | utility | predictive | predictive-utility (P-SLAM: skip predicted frontiers)");
   app.add_flag("--predict", a->predict, "P-SLAM: predict at each target and use hypotheses in the particle weights");

@@ -17,6 +17,7 @@
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "run_json.hpp"
 
 namespace lookahead::app {
 namespace {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "run_json.hpp"
 #include "lookahead/predictor/pslam_config.hpp"
 #include "lookahead/predictor/slam_lookahead.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
@@ -126,9 +127,9 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   j["final_estimate"] = {mean.x, mean.y, mean.theta};  // weighted mean, as SegSLAM's run.json
   j["map_entropy_nats"] = h.total;
   j["map_observed_cells"] = h.observed;
-  j["parameters_yaml"] = slam::dump_rbpf_options(filter.options());
   if (lookahead) j["prediction"] = prediction_json(st, lookahead->statistics(), prediction);
-  std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
+  write_run_json(a.out, j, filter.options().threads,
+                 slam::dump_rbpf_options(filter.options()) + predictor::dump_log_prediction_options(prediction));
 }
 
 int run_slam(const SlamArgs& a) {

@@ -19,6 +19,7 @@
 #include "lookahead/slam/io/trajectory_io.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "run_json.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -151,8 +152,7 @@ int run_slam_hybrid(const slam::LaserLog& log, const SlamHybridArgs& a) {
   j["x_real_time"] = duration / wall;
   j["peak_memory_mb"] = peak_memory_mb();
   j["error_vs_reference"] = score(logger_time, log, reference_log_for(log.path));
-  j["parameters_yaml"] = dump_hybrid_config({options.filter, {}, {}, options.landmarks});
-  std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
+  write_run_json(a.out, j, 1, dump_hybrid_config({options.filter, {}, {}, options.landmarks}));
   spdlog::info("done in {:.1f} s ({:.1f}x real time): {} landmarks from {} observations, {} fusions; wrote {}/map.png",
                wall, duration / wall, r.features.size(), r.observations, r.fusions, a.out);
   return 0;

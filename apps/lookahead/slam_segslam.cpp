@@ -18,6 +18,7 @@
 #include "lookahead/slam/segslam/segment_picture.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "run_json.hpp"
 
 namespace lookahead::app {
 namespace {
