@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 // ROS bags written from a real CARMEN log (fr101) with rosbag's writer map to the same
-// trajectory as the log itself, through /tf and through /odom; MRPT's rosbag2rawlog turns
-// the same bag into a rawlog that maps to it too; `lookahead slam` on a bag writes a TUM
-// trajectory that `lookahead eval` reads back.
+// trajectory as the log itself, through /tf and through /odom; `lookahead slam` on a bag
+// writes a TUM trajectory that `lookahead eval` reads back.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -105,36 +104,6 @@ Shell shell(const std::string& cmd) {
   std::stringstream text;
   text << std::ifstream(out).rdbuf();
   return {WEXITSTATUS(status), text.str()};
-}
-
-std::vector<Pose2> poses_of(const std::string& trajectory) {
-  std::vector<Pose2> poses;
-  for (const StampedPose& p : read_any_trajectory(trajectory)) poses.push_back(p.pose);
-  return poses;
-}
-
-TEST(BagFromCarmen, MrptRosbag2rawlogConvertsTheBagToARawlogThatMapsTheSame) {
-  SKIP_WITHOUT_FR101();
-  if (!fs::exists("/usr/bin/rosbag2rawlog")) GTEST_SKIP() << "mrpt-apps has no rosbag2rawlog";
-  const std::string bag = temp("mrpt.bag").string();
-  BagWriteOptions w;
-  w.odometry_on_tf = false;
-  write_bag(fr101_prefix(), bag, w);
-  // base_link -> laser still goes to /tf_static, where rosbag2rawlog finds the sensor pose.
-  const fs::path config = temp("rosbag2rawlog.yml");
-  std::ofstream(config) << "sensors:\n  laser:\n    type: CObservation2DRangeScan\n    topic: /scan\n"
-                           "  odometry:\n    type: CObservationOdometry\n    topic: /odom\n";
-  const std::string rawlog = temp("converted.rawlog").string();
-  const Shell convert = shell("rosbag2rawlog -w -f odom -b base_link -c " + config.string() + " -o " + rawlog + " " + bag);
-  ASSERT_EQ(convert.code, 0) << convert.output;
-  const LaserLog converted = read_mrpt_rawlog(rawlog);
-  ASSERT_EQ(converted.scans.size(), kScans);
-  const LaserLog from_bag = read_ros_bag(bag);
-  for (std::size_t i = 0; i < kScans; i += 50) {
-    EXPECT_NEAR(converted.scans[i].odometry.x, from_bag.scans[i].odometry.x, 1e-6) << i;
-    EXPECT_NEAR(converted.scans[i].laser_offset.x, from_bag.scans[i].laser_offset.x, 1e-6) << i;
-  }
-  expect_same_trajectory(map_log(converted), map_log(from_bag));
 }
 
 TEST(BagFromCarmen, SlamOnABagWritesATumTrajectoryThatEvalReadsBack) {

@@ -28,7 +28,7 @@ void check_timing(LogCheck& c, const LaserLog& log, const LogCheckOptions& o) {
     std::nth_element(periods.begin(), periods.begin() + static_cast<std::ptrdiff_t>(periods.size() / 2), periods.end());
     c.median_period = periods[periods.size() / 2];
   }
-  c.gap_threshold = std::max(o.min_gap, o.gap_factor * c.median_period);
+  c.gap_threshold = std::min(o.max_gap, std::max(o.min_gap, o.gap_factor * c.median_period));
   std::sort(gaps.begin(), gaps.end(), [](const ScanGap& a, const ScanGap& b) { return a.seconds > b.seconds; });
   for (const ScanGap& g : gaps) c.long_gaps += g.seconds > c.gap_threshold;
   gaps.resize(std::min<std::size_t>(gaps.size(), 3));

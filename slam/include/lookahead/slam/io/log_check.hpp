@@ -16,9 +16,11 @@
 namespace lookahead::slam {
 
 struct LogCheckOptions {
-  /// A gap is a scan period longer than this many median periods and than min_gap.
+  /// A gap is a scan period longer than this many median periods and than min_gap, or
+  /// longer than max_gap whatever the median (a log sampled sparsely throughout).
   double gap_factor = 5.0;
   double min_gap = 1.0;  ///< [s]
+  double max_gap = 5.0;  ///< [s]
   /// An odometry jump: consecutive scans further apart than jump_distance [m] at more than
   /// max_speed [m/s], or turned more than jump_angle [rad] at more than max_turn_rate [rad/s].
   double jump_distance = 0.5;
