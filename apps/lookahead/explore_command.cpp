@@ -37,6 +37,7 @@ struct ExploreArgs {
   std::vector<double> start;
   bool animation = true;
   bool log = false;
+  std::string log_format = "carmen";
   bool predict = false;
   double laser_range = 0.0;
   double laser_fov_deg = 0.0;
@@ -77,7 +78,7 @@ int run_explore(ExploreArgs a) {
                options.strategy, exploration::pose_source_name(options.pose_source), options.seed);
   std::filesystem::create_directories(a.out);
   exploration::Mission mission(world.world, world.start, options);
-  if (a.log) mission.record_log(a.out + "/run.log");
+  if (a.log) mission.record_log(a.out + (a.log_format == "bag" ? "/run.bag" : "/run.log"));
   std::unique_ptr<exploration::AnimationWriter> video;
   if (a.animation) video = std::make_unique<exploration::AnimationWriter>(a.out + "/animation.mp4", 10.0);
   ProgressBar bar("explore", 100);
@@ -127,7 +128,9 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--coverage-goal", a->coverage_goal, "stop at this share of the reachable area (default 0.95)");
   app.add_option("--out", a->out, "output folder")->capture_default_str();
   app.add_flag("!--no-animation", a->animation, "skip animation.mp4");
-  app.add_flag("--log", a->log, "also write the run as a CARMEN log (run.log)");
+  app.add_flag("--log", a->log, "also write the run as a log `lookahead slam` replays (run.log or run.bag)");
+  app.add_option("--log-format", a->log_format, "carmen (run.log) or bag (ROS1 run.bag)")
+      ->check(CLI::IsMember({"carmen", "bag"}))->capture_default_str();
   return [a] { return run_explore(*a); };
 }
 

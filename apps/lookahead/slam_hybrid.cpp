@@ -11,6 +11,7 @@
 #include "hybrid_pictures.hpp"
 #include "lookahead/slam/eval/absolute_error.hpp"
 #include "lookahead/slam/eval/relative_error.hpp"
+#include "lookahead/slam/io/tum_trajectory.hpp"
 #include "lookahead/slam/eval/scan_matched_reference.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
 #include "lookahead/slam/hybrid/hybrid_config.hpp"
@@ -132,6 +133,7 @@ int run_slam_hybrid(const slam::LaserLog& log, const SlamHybridArgs& a) {
     odometry.push_back(log.scans.front().odometry.compose(log.scans.front().odometry.between(log.scans[i].odometry)));
   }
   slam::write_trajectory(a.out + "/trajectory.txt", stamped);
+  slam::write_tum_trajectory(a.out + "/trajectory.tum", stamped);  // for evo
   slam::write_trajectory(a.out + "/trajectory_logger_time.txt", logger_time);
   write_landmarks(a.out + "/landmarks.txt", r.features);
   const slam::ProbabilityMap map = occupancy_along(log, r.trajectory);

@@ -14,9 +14,11 @@
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
 #include "lookahead/slam/segslam/min_entropy_search.hpp"
+#include "lookahead/slam/io/tum_trajectory.hpp"
 #include "lookahead/slam/segslam/seg_slam.hpp"
 #include "lookahead/slam/segslam/segment_picture.hpp"
 #include "process_stats.hpp"
+#include "log_input.hpp"
 #include "progress_bar.hpp"
 #include "run_json.hpp"
 
@@ -28,11 +30,8 @@ using slam::segslam::SegSlam;
 slam::LaserLog read_log(const SegSlamArgs& a) {
   slam::LogReadOptions read;
   read.skip_bad_lines = a.skip_bad_lines;
-  slam::LaserLog log = slam::read_laser_log(a.log, read);
-  if (log.bad_lines > 0) spdlog::warn("skipped {} malformed lines; first: {}", log.bad_lines, log.first_bad_line_message);
-  if (log.scans.empty()) throw std::runtime_error(a.log + ": no laser scans in the log");
-  if (a.max_scans > 0 && log.scans.size() > a.max_scans) log.scans.resize(a.max_scans);
-  return log;
+  read.bag = a.bag;
+  return load_laser_log(a.log, read, a.max_scans);
 }
 
 // NAME.txt (the log's time stamps) and NAME_logger_time.txt (the logger's, for lookahead eval
@@ -45,6 +44,7 @@ void write_trajectory_files(const std::string& out, const std::string& name, con
     logger.push_back({log.scans[i].logger_timestamp, path[i]});
   }
   slam::write_trajectory(out + "/" + name + ".txt", stamped);
+  slam::write_tum_trajectory(out + "/" + name + ".tum", stamped);  // for evo
   slam::write_trajectory(out + "/" + name + "_logger_time.txt", logger);
 }
 
