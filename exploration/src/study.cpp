@@ -116,9 +116,13 @@ void write_text(const fs::path& path, const std::string& text) {
   if (!out) throw slam::ParseError(path.string(), 0, "", "", "cannot write");
 }
 
-StudyRunResult execute_run(const GeneratedWorld& world, const std::string& label,
-                           const MissionOptions& options, const std::string& config_text,
-                           const std::string& mission_id, const fs::path& dir) {
+// nullopt when `stop` was set while it ran: an interrupted study reports what finished
+// before the interruption, so a run ending after it is not published.
+std::optional<StudyRunResult> execute_run(const GeneratedWorld& world, const std::string& label,
+                                          const MissionOptions& options,
+                                          const std::string& config_text,
+                                          const std::string& mission_id, const fs::path& dir,
+                                          const std::atomic<bool>* stop) {
   Mission mission(world.world, world.start, options);
   const auto start = Clock::now();
   mission.run();
@@ -144,6 +148,10 @@ StudyRunResult execute_run(const GeneratedWorld& world, const std::string& label
   config.close();
   if (!config)
     throw slam::ParseError((staging / "run_config.yaml").string(), 0, "", "", "cannot write");
+  if (stop && stop->load()) {
+    fs::remove_all(staging);
+    return std::nullopt;
+  }
   fs::remove_all(dir);
   fs::rename(staging, dir);
   return r;
@@ -298,11 +306,12 @@ StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progre
         state.in_flight.push_back(m.folder);
       }
       try {
-        StudyRunResult r = execute_run(*worlds[m.run.world], spec.worlds[m.run.world].label,
-                                       run_options(spec, m.run), run_config_text(spec, m.run, m.id),
-                                       m.id, run_dir(spec, m));
+        std::optional<StudyRunResult> r = execute_run(
+            *worlds[m.run.world], spec.worlds[m.run.world].label, run_options(spec, m.run),
+            run_config_text(spec, m.run, m.id), m.id, run_dir(spec, m), options.stop);
         const std::lock_guard<std::mutex> lock(mutex);
-        result.runs[pending[k]] = std::move(r);
+        if (!r) break;
+        result.runs[pending[k]] = std::move(*r);
         ++state.done;
         ++result.executed;
         state.elapsed = std::chrono::duration<double>(Clock::now() - start).count();
