@@ -35,7 +35,7 @@ int dispatch(StudyArgs a, const std::vector<std::string>& words) {
 Run add_study_command(CLI::App& app) {
   auto a = std::make_shared<StudyArgs>();
   auto words = std::make_shared<std::vector<std::string>>();
-  app.add_option("words", *words,
+  app.add_option("study", *words,
                  "STUDY.yaml (plan, run every mission here, merge), or one of\n"
                  "  plan STUDY.yaml   write OUT/plan.csv: every mission and its id\n"
                  "  run STUDY.yaml    run a shard (--shard I/N, or the Slurm array task's)\n"
