@@ -101,6 +101,15 @@ ex::StudyResult run_missions(const ex::StudySpec& spec, const StudyArgs& a,
   return result;
 }
 
+// Staging folders of missions an earlier, interrupted invocation left (runs/<run>.<pid>.partial).
+void remove_staging_folders(const ex::StudySpec& spec) {
+  const std::filesystem::path runs = spec.out + "/runs";
+  if (!std::filesystem::exists(runs)) return;
+  for (const auto& e : std::filesystem::directory_iterator(runs)) {
+    if (e.path().extension() == ".partial") std::filesystem::remove_all(e.path());
+  }
+}
+
 }  // namespace
 
 int study_plan(const StudyArgs& a) {
@@ -151,6 +160,7 @@ int study_merge(const StudyArgs& a) {
 
 int study_local(const StudyArgs& a) {
   const ex::StudySpec spec = load(a);
+  remove_staging_folders(spec);  // the local study owns its folder: nothing else runs there
   ex::write_plan(spec, plan_here(spec));
   std::atomic<bool> stop{false};
   const StudyInterrupt interrupt([&](int sig) {

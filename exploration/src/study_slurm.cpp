@@ -42,8 +42,11 @@ std::string slurm_array_script(const SlurmJobOptions& o) {
 
 std::string slurm_merge_script(const SlurmJobOptions& o) {
   std::string s = header(o, o.name + "-merge", "merge_%j.log", 1);
-  s += "# Runs after every array task ended (submitted with --dependency=afterany:ARRAY).\n"
+  s += "# Runs after every array task ended (submitted with --dependency=afterany:ARRAY), so\n"
+       "# the staging folders of missions killed with their task can go.\n"
        "set -euo pipefail\n";
+  s += fmt::format("find {} -maxdepth 1 -name '*.partial' -exec rm -rf {{}} +\n",
+                   shell_quote(o.out + "/runs"));
   s += fmt::format("exec {} study merge {}\n", shell_quote(o.binary), shell_quote(o.study));
   return s;
 }

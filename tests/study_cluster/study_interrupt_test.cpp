@@ -50,6 +50,8 @@ TEST(StudyInterrupt, WritesTheResultsOfTheFinishedMissions) {
             std::string::npos)
       << again.output;
   EXPECT_EQ(data_rows(out / "results.csv"), 12u);
+  // The staging folder of the mission the signal abandoned is gone.
+  EXPECT_EQ(std::distance(fs::directory_iterator(out / "runs"), fs::directory_iterator()), 12);
 }
 
 }  // namespace
