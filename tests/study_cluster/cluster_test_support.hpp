@@ -109,7 +109,8 @@ class SlurmCluster : public ::testing::Test {
     if (::geteuid() != 0) GTEST_SKIP() << "the one-node Slurm cluster needs root";
     if (shell("command -v slurmctld && command -v munged").code != 0)
       GTEST_SKIP() << "slurm-wlm and munge are not installed (scripts/install_deps.sh)";
-    dir_ = fs::temp_directory_path() / ("lookahead-slurm-test-" + std::to_string(::getpid()));
+    // A fixed folder: the ctest cleanup fixture stops this cluster even when a test died.
+    dir_ = LOOKAHEAD_TEST_SLURM_DIR;
     script_ = "LOOKAHEAD_SLURM_DIR=" + dir_.string() + " " + std::string(LOOKAHEAD_SOURCE_DIR) +
               "/scripts/slurm_local.sh";
     const Shell r = shell(script_ + " start");

@@ -20,7 +20,8 @@ Shell chromium(const fs::path& profile, const fs::path& page, const std::string&
   fs::create_directories(profile);
   return shell(
       "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-quic "
-      "--no-first-run --disable-background-networking --disable-component-update "
+      "--no-first-run --disable-dev-shm-usage --disable-background-networking "
+      "--disable-component-update "
       "--disable-sync --enable-logging=stderr --v=0 --allow-file-access-from-files "
       "--virtual-time-budget=10000 --window-size=1280,2400 --user-data-dir=" +
       profile.string() + " " + action + " file://" + page.string());
