@@ -5,10 +5,12 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git time
+  build-essential cmake pkg-config git time clang-format
   libeigen3-dev libopencv-dev libompl-dev liboctomap-dev
   libmrpt-dev mrpt-common mrpt-apps
+  librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev
   libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev zlib1g-dev
+  libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   slurm-wlm munge chromium fonts-dejavu-core
 )

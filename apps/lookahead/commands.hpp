@@ -13,6 +13,7 @@ using Run = std::function<int()>;
 Run add_slam_command(CLI::App& app);
 Run add_slam3d_command(CLI::App& app);
 Run add_eval_command(CLI::App& app);
+Run add_check_command(CLI::App& app);
 Run add_config_command(CLI::App& app);
 Run add_explore_command(CLI::App& app);
 Run add_study_command(CLI::App& app);

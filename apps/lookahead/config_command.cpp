@@ -1,30 +1,75 @@
 // SPDX-License-Identifier: MIT
-// `lookahead config --dump`: the documented defaults, the source of config/slam/default.yaml.
+// `lookahead config`: the one front door to every configuration section. `dump` prints a
+// section's documented defaults (the source of config/<section>/default.yaml), `check`
+// loads a file through the section's own loader, `reference` prints docs/config.md.
 #include <fmt/format.h>
 
+#include <filesystem>
+#include <stdexcept>
+
 #include "commands.hpp"
-#include "lookahead/exploration/mission_config.hpp"
-#include "lookahead/predictor/pslam_config.hpp"
+#include "config_sections.hpp"
+#include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::app {
+namespace {
+
+struct ConfigArgs {
+  std::string section = "slam";
+  std::string file;
+  std::string check_section;  // empty: from the file's folder under config/
+};
+
+const ConfigSection& section_named(const std::string& name) {
+  for (const ConfigSection& s : config_sections()) {
+    if (name == s.name) return s;
+  }
+  std::string names;
+  for (const ConfigSection& s : config_sections()) names += (names.empty() ? "" : " | ") + s.name;
+  throw std::invalid_argument(fmt::format("unknown config section '{}': expected {}", name, names));
+}
+
+// config/<folder>/x.yaml names its section; robot presets are mission files.
+std::string section_of_path(const std::string& path) {
+  const std::string folder = std::filesystem::path(path).parent_path().filename().string();
+  if (folder == "robot") return "mission";
+  for (const ConfigSection& s : config_sections()) {
+    if (folder == s.name) return folder;
+  }
+  throw std::invalid_argument(fmt::format(
+      "{}: cannot tell which section this file configures from its folder '{}': pass "
+      "--section (slam | segslam | hybrid | slam3d | mission | study)",
+      path, folder));
+}
+
+int check(const ConfigArgs& a) {
+  const std::string name = a.check_section.empty() ? section_of_path(a.file) : a.check_section;
+  section_named(name).check(a.file);
+  fmt::print("{}: ok ({} configuration)\n", a.file, name);
+  return 0;
+}
+
+}  // namespace
 
 Run add_config_command(CLI::App& app) {
-  auto check = std::make_shared<std::string>();
-  app.add_flag("--dump", "print the default SLAM configuration (YAML)");
-  auto mission = std::make_shared<bool>(false);
-  app.add_flag("--dump-mission", *mission, "print the default mission configuration (YAML)");
-  app.add_option("--check", *check, "load a YAML config and report the first error");
-  return [check, mission] {
-    if (*mission) {
-      fmt::print("{}", exploration::dump_mission_options(exploration::MissionOptions::defaults()));
-      return 0;
+  auto a = std::make_shared<ConfigArgs>();
+  app.require_subcommand(1);
+  CLI::App* dump = app.add_subcommand("dump", "print a section's documented defaults (YAML)");
+  dump->add_option("section", a->section, "slam | segslam | hybrid | slam3d | mission | study")
+      ->capture_default_str();
+  CLI::App* chk = app.add_subcommand("check", "load a YAML file and report the first error");
+  chk->add_option("file", a->file, "the YAML file")->required();
+  chk->add_option("--section", a->check_section,
+                  "which section the file configures (default: its folder under config/)");
+  CLI::App* ref = app.add_subcommand("reference", "every section as Markdown (docs/config.md)");
+  return [a, dump, chk, ref] {
+    if (dump->parsed()) {
+      fmt::print("{}", section_named(a->section).dump());
+    } else if (chk->parsed()) {
+      return check(*a);
+    } else if (ref->parsed()) {
+      fmt::print("{}", config_reference());
     }
-    if (!check->empty()) {
-      predictor::load_pslam_options(*check);
-      fmt::print("{}: ok\n", *check);
-      return 0;
-    }
-    fmt::print("{}", predictor::dump_pslam_options({}));
     return 0;
   };
 }

@@ -11,12 +11,13 @@
 #include "lookahead/slam/eval/relative_error.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
+#include "lookahead/slam/io/tum_trajectory.hpp"
 
 namespace lookahead::app {
 namespace {
 
 struct EvalArgs {
-  std::string relations, reference_log, trajectory, map, reference_map;
+  std::string relations, reference_log, reference, trajectory, map, reference_map;
   double tolerance = 0.005;
   bool json = false;
 };
@@ -30,17 +31,31 @@ std::vector<slam::StampedPose> reference_from_log(const std::string& path) {
   return ref;
 }
 
+// Which reference pose each estimate pose was paired with, in words and JSON.
+void print_association(const std::vector<slam::StampedPose>& reference, std::size_t matched, double tolerance,
+                       nlohmann::json& j) {
+  fmt::print("timestamps associated: each reference pose with the nearest estimate stamp within +-{:.4f} s, no "
+             "clock offset; {} of {} reference poses matched\n", tolerance, matched, reference.size());
+  j["association"] = {{"method", "nearest stamp"}, {"tolerance_s", tolerance}, {"offset_s", 0.0},
+                      {"matched", matched}, {"reference_poses", reference.size()}};
+}
+
+std::vector<slam::StampedPose> read_reference(const EvalArgs& a) {
+  return a.reference.empty() ? reference_from_log(a.reference_log) : slam::read_any_trajectory(a.reference);
+}
+
 int run_eval(const EvalArgs& a) {
   nlohmann::json j;
   if (!a.trajectory.empty()) {
-    const auto trajectory = slam::read_trajectory(a.trajectory);
+    const auto trajectory = slam::read_any_trajectory(a.trajectory);
     std::vector<slam::Relation> relations;
     if (!a.relations.empty()) {
       relations = slam::read_relations(a.relations);
-    } else if (!a.reference_log.empty()) {
-      const auto reference = reference_from_log(a.reference_log);
+    } else if (!a.reference_log.empty() || !a.reference.empty()) {
+      const auto reference = read_reference(a);
       relations = slam::relations_from_reference(reference);
       const slam::AbsoluteError ate = slam::absolute_trajectory_error(reference, trajectory, a.tolerance);
+      print_association(reference, ate.matched, a.tolerance, j);
       fmt::print("absolute error after SE(2) alignment: RMSE {:.3f} m, mean {:.3f} m, max {:.3f} m "
                  "({} poses matched)\n", ate.rmse, ate.mean, ate.max, ate.matched);
       j["ate_rmse_m"] = ate.rmse;
@@ -48,7 +63,7 @@ int run_eval(const EvalArgs& a) {
       j["ate_max_m"] = ate.max;
       j["ate_matched"] = ate.matched;
     } else {
-      throw std::runtime_error("eval: --trajectory needs --relations or --reference-log");
+      throw std::runtime_error("eval: --trajectory needs --relations, --reference or --reference-log");
     }
     const slam::RelativeError e = slam::relative_error(relations, trajectory, a.tolerance);
     fmt::print("relative error: translation {:.3f} +- {:.3f} m, rotation {:.2f} +- {:.2f} deg "
@@ -87,7 +102,10 @@ Run add_eval_command(CLI::App& app) {
   app.add_option("--relations", args->relations, "benchmark .relations file (Kuemmerle et al. 2009)");
   app.add_option("--reference-log", args->reference_log,
                  "corrected CARMEN log used as reference instead of relations (consecutive scans)");
-  app.add_option("--trajectory", args->trajectory, "trajectory.txt written by `lookahead slam`");
+  app.add_option("--reference", args->reference,
+                 "reference trajectory, TUM (timestamp tx ty tz qx qy qz qw) or 'timestamp x y theta'");
+  app.add_option("--trajectory", args->trajectory,
+                 "trajectory.txt or trajectory.tum written by `lookahead slam` (or any TUM file)");
   app.add_option("--map", args->map, "map .yaml (map_server) whose entropy to compute");
   app.add_option("--reference-map", args->reference_map,
                  "map .yaml taken as truth P: prints the KL divergence D(P || --map)");

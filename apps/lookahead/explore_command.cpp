@@ -37,10 +37,11 @@ struct ExploreArgs {
   std::vector<double> start;
   bool animation = true;
   bool log = false;
+  std::string log_format = "carmen";
   bool predict = false;
   double laser_range = 0.0;
   double laser_fov_deg = 0.0;
-  int threads = 0;
+  std::optional<int> threads;  ///< unset: the config's slam.filter.threads
   double robot_radius = 0.0;
 };
 
@@ -57,7 +58,7 @@ exploration::MissionOptions mission_options(const ExploreArgs& a) {
   if (a.coverage_goal) o.coverage_goal = *a.coverage_goal;
   if (a.laser_range > 0) o.laser.max_range = a.laser_range;
   if (a.laser_fov_deg > 0) o.laser.fov = a.laser_fov_deg * M_PI / 180.0;
-  o.slam.threads = a.threads;
+  if (a.threads) o.slam.threads = *a.threads;
   if (a.robot_radius > 0) o.robot.radius = a.robot_radius;
   if (a.pose == std::string("truth")) o.pose_source = exploration::PoseSource::kTruth;
   else if (a.pose == std::string("slam")) o.pose_source = exploration::PoseSource::kSlam;
@@ -77,7 +78,7 @@ int run_explore(ExploreArgs a) {
                options.strategy, exploration::pose_source_name(options.pose_source), options.seed);
   std::filesystem::create_directories(a.out);
   exploration::Mission mission(world.world, world.start, options);
-  if (a.log) mission.record_log(a.out + "/run.log");
+  if (a.log) mission.record_log(a.out + (a.log_format == "bag" ? "/run.bag" : "/run.log"));
   std::unique_ptr<exploration::AnimationWriter> video;
   if (a.animation) video = std::make_unique<exploration::AnimationWriter>(a.out + "/animation.mp4", 10.0);
   ProgressBar bar("explore", 100);
@@ -115,7 +116,7 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--laser-range", a->laser_range, "sensor range [m] (default 8, a SICK LMS-200 in Stage)");
   app.add_option("--laser-fov", a->laser_fov_deg, "sensor field of view [deg] (default 180)");
   app.add_option("--robot-radius", a->robot_radius, "robot disc radius [m] (default 0.25, a Pioneer 3-DX)");
-  app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores")->capture_default_str();
+  app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores (default: slam.filter.threads)");
   app.add_option("--start", a->start, "start pose x y theta (default: the world's)")->expected(3);
   app.add_option("--strategy", a->strategy, "nearest | utility | predictive | predictive-utility (P-SLAM: skip predicted frontiers)");
   app.add_flag("--predict", a->predict, "P-SLAM: predict at each target and use hypotheses in the particle weights");
@@ -127,7 +128,9 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--coverage-goal", a->coverage_goal, "stop at this share of the reachable area (default 0.95)");
   app.add_option("--out", a->out, "output folder")->capture_default_str();
   app.add_flag("!--no-animation", a->animation, "skip animation.mp4");
-  app.add_flag("--log", a->log, "also write the run as a CARMEN log (run.log)");
+  app.add_flag("--log", a->log, "also write the run as a log `lookahead slam` replays (run.log or run.bag)");
+  app.add_option("--log-format", a->log_format, "carmen (run.log) or bag (ROS1 run.bag)")
+      ->check(CLI::IsMember({"carmen", "bag"}))->capture_default_str();
   return [a] { return run_explore(*a); };
 }
 

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "run_json.hpp"
 #include "hybrid_pictures.hpp"
 #include "hybrid_trial_trace.hpp"
 #include "lookahead/exploration/line_plot.hpp"
@@ -191,7 +192,6 @@ int run_hybrid_sim(const HybridSimArgs& a) {
     return 0;
   }
   nlohmann::json j;
-  j["parameters_yaml"] = dump_hybrid_config(c);
   if (!a.no_figures) j["figure_runs"] = figures(c, a.out);
   if (!a.no_study) {
     std::vector<FilterKind> filters = {FilterKind::kFastSlam, FilterKind::kEkf, FilterKind::kHybrid};
@@ -212,7 +212,7 @@ int run_hybrid_sim(const HybridSimArgs& a) {
                             {"failed_trials_and_steps", cell.failures}});
     }
   }
-  std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
+  write_run_json(a.out, j, c.study.threads, dump_hybrid_config(c));
   spdlog::info("wrote {}", a.out);
   return 0;
 }

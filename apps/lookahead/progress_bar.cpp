@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace lookahead::app {
@@ -16,27 +17,41 @@ ProgressBar::ProgressBar(std::string label, std::size_t total)
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
+namespace {
+
+std::string duration(double seconds) {
+  const auto s = static_cast<long>(seconds + 0.5);
+  if (s < 60) return fmt::format("{}s", s);
+  if (s < 3600) return fmt::format("{}m{:02}s", s / 60, s % 60);
+  return fmt::format("{}h{:02}m", s / 3600, (s / 60) % 60);
+}
+
+}  // namespace
+
 void ProgressBar::update(std::size_t done, const std::string& note) {
-  const double frac = static_cast<double>(done) / static_cast<double>(total_);
+  shown_ = std::max(shown_, std::min(done, total_));
+  const double frac = static_cast<double>(shown_) / static_cast<double>(total_);
   const auto now = std::chrono::steady_clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
+  const double rate = elapsed > 0 ? static_cast<double>(shown_) / elapsed : 0.0;
+  const std::string left = rate > 0 ? duration(static_cast<double>(total_ - shown_) / rate) : "?";
   if (!tty_) {
     const int decile = static_cast<int>(frac * 10);
-    if (decile != last_decile_) {
+    if (decile > last_decile_) {
       last_decile_ = decile;
-      spdlog::info("{}: {:3.0f}% ({}/{}) {:.1f} s {}", label_, frac * 100, done, total_, elapsed, note);
+      spdlog::info("{}: {:3.0f}% ({}/{}) elapsed {}, {:.3g}/s, about {} left {}", label_,
+                   frac * 100, shown_, total_, duration(elapsed), rate, left, note);
     }
     return;
   }
-  if (now - last_draw_ < std::chrono::milliseconds(100) && done < total_) return;
+  if (now - last_draw_ < std::chrono::milliseconds(100) && shown_ < total_) return;
   last_draw_ = now;
   constexpr int kWidth = 30;
   const int filled = static_cast<int>(frac * kWidth);
-  const double eta = frac > 0 ? elapsed * (1 - frac) / frac : 0.0;
-  fmt::print(stderr, "\r{} [{}{}] {:3.0f}% {}/{} {:.0f}s eta {:.0f}s {}   ", label_,
+  fmt::print(stderr, "\r{} [{}{}] {:3.0f}% {}/{} {} {:.3g}/s eta {} {}\x1b[K", label_,
              std::string(static_cast<std::size_t>(filled), '#'),
-             std::string(static_cast<std::size_t>(kWidth - filled), '.'), frac * 100, done, total_,
-             elapsed, eta, note);
+             std::string(static_cast<std::size_t>(kWidth - filled), '.'), frac * 100, shown_,
+             total_, duration(elapsed), rate, left, note);
   std::fflush(stderr);
 }
 

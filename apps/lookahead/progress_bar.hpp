@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Progress of a long run: a live bar on a terminal, a log line every 10% otherwise.
+// Progress of a long run: a live bar on a terminal (elapsed, rate, estimated time left), a
+// plain log line every 10 % otherwise. The bar never goes backwards: a report of fewer items
+// than already shown (parallel workers report out of order) keeps the bar where it is.
 #pragma once
 
 #include <chrono>
@@ -18,6 +20,7 @@ class ProgressBar {
   std::string label_;
   std::size_t total_;
   bool tty_;
+  std::size_t shown_ = 0;  ///< the most items reported so far
   int last_decile_ = -1;
   std::chrono::steady_clock::time_point start_, last_draw_;
 };

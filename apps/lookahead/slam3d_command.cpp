@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "run_json.hpp"
 #include "lookahead/slam/config/slam3d_config.hpp"
 #include "lookahead/slam/eval/octree_map_entropy.hpp"
 #include "lookahead/slam/io/map_picture.hpp"
@@ -168,8 +169,7 @@ void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& fil
     j["dead_reckoning_final_error_m"] = (odometry.back().translation() - end).norm();
   }
   j["neff_history"] = st.neff;
-  j["parameters_yaml"] = a.config;
-  std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
+  write_run_json(a.out, j, filter.options().threads, a.config);
   if (j.contains("final_position_error_m")) {
     spdlog::info("final position error {:.2f} m (dead reckoning {:.2f} m) over {:.0f} m",
                  j["final_position_error_m"].get<double>(),

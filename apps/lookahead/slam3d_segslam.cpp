@@ -17,6 +17,7 @@
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "run_json.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -176,7 +177,7 @@ nlohmann::json statistics_json(const SegSlam3d& f, const slam::RangeLog3& log) {
 }
 
 // RMSE of a path's positions in the plane from the truth after the best SE(2) alignment: how
-// consistent a map drawn along that path is (the 2D study's measure, bench/segslam/csail_error.py --global).
+// consistent a map drawn along that path is (the 2D study's measure, bench/runs/csail_error.py --global).
 double aligned_planar_rmse(const slam::RangeLog3& log, const std::vector<slam::Pose4>& path) {
   std::vector<slam::StampedPose> truth, estimate;
   for (std::size_t i = 0; i < log.sweeps.size() && i < path.size(); ++i) {
@@ -283,9 +284,8 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   add_errors(j, log, filter, poses);
   slam::Slam3dOptions with_filter = o;
   with_filter.filter = options.filter;
-  j["parameters_yaml"] = slam::dump_slam3d_options(with_filter);
-  j["segslam_parameters_yaml"] = slam::dump_segslam_options(options.segslam);
-  std::ofstream(run.out + "/run.json") << j.dump(2) << "\n";
+  write_run_json(run.out, j, with_filter.filter.threads,
+                 slam::dump_slam3d_options(with_filter) + "segslam:\n" + indent(slam::dump_segslam_options(options.segslam)));
   if (j.contains("final_position_error_m")) {
     spdlog::info("final position error {:.2f} m (dead reckoning {:.2f} m) over {:.0f} m; {} segmentations, {} matches "
                  "({} locked, {} merged)",

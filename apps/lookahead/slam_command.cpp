@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "run_json.hpp"
 #include "lookahead/predictor/pslam_config.hpp"
 #include "lookahead/predictor/slam_lookahead.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
@@ -18,6 +19,8 @@
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/map_picture.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
+#include "lookahead/slam/io/tum_trajectory.hpp"
+#include "log_input.hpp"
 #include "lookahead/slam/rbpf/rbpf.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
@@ -40,6 +43,7 @@ struct SlamArgs {
   int threads = -1;
   std::size_t max_scans = 0;
   bool skip_bad_lines = false;
+  slam::BagReadOptions bag;
   bool predict = false;
   std::string method = "rbpf";
   std::string segslam_config;
@@ -96,6 +100,7 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   std::vector<slam::StampedPose> stamped;
   for (std::size_t i = 0; i < path.size(); ++i) stamped.push_back({filter.timestamps()[i], path[i]});
   slam::write_trajectory(a.out + "/trajectory.txt", stamped);
+  slam::write_tum_trajectory(a.out + "/trajectory.tum", stamped);  // for evo
   // CARMEN logs carry a second clock; GMapping's corrected logs print that one, so a copy on
   // it lets `lookahead eval --reference-log X.gfs.log` pair the poses.
   if (std::any_of(log.scans.begin(), log.scans.end(),
@@ -126,9 +131,9 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   j["final_estimate"] = {mean.x, mean.y, mean.theta};  // weighted mean, as SegSLAM's run.json
   j["map_entropy_nats"] = h.total;
   j["map_observed_cells"] = h.observed;
-  j["parameters_yaml"] = slam::dump_rbpf_options(filter.options());
   if (lookahead) j["prediction"] = prediction_json(st, lookahead->statistics(), prediction);
-  std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
+  write_run_json(a.out, j, filter.options().threads,
+                 slam::dump_rbpf_options(filter.options()) + predictor::dump_log_prediction_options(prediction));
 }
 
 int run_slam(const SlamArgs& a) {
@@ -137,13 +142,8 @@ int run_slam(const SlamArgs& a) {
   const slam::RbpfOptions& options = file.rbpf;
   slam::LogReadOptions read;
   read.skip_bad_lines = a.skip_bad_lines;
-  spdlog::info("reading {}", a.log);
-  slam::LaserLog log = slam::read_laser_log(a.log, read);
-  if (log.bad_lines > 0) {
-    spdlog::warn("skipped {} malformed lines; first: {}", log.bad_lines, log.first_bad_line_message);
-  }
-  if (log.scans.empty()) throw std::runtime_error(a.log + ": no laser scans in the log");
-  if (a.max_scans > 0 && log.scans.size() > a.max_scans) log.scans.resize(a.max_scans);
+  read.bag = a.bag;
+  slam::LaserLog log = load_laser_log(a.log, read, a.max_scans);
   if (a.method == "hybrid") return run_slam_hybrid(log, {a.out, a.config, a.particles, a.seed});
   spdlog::info("{} scans, {} beams each; {} particles", log.scans.size(),
                log.scans.front().ranges.size(), options.particles);
@@ -174,7 +174,7 @@ int run_slam(const SlamArgs& a) {
 
 Run add_slam_command(CLI::App& app) {
   auto args = std::make_shared<SlamArgs>();
-  app.add_option("log", args->log, "CARMEN log (.log/.clf, .gz) or MRPT .rawlog")
+  app.add_option("log", args->log, "CARMEN log (.log/.clf, .gz), MRPT .rawlog or ROS1 .bag")
       ->default_str("the MRPT one-loop dataset");
   app.add_option("--out", args->out, "output folder")->capture_default_str();
   app.add_option("--config", args->config, "YAML options (see config/slam/default.yaml)");
@@ -183,6 +183,7 @@ Run add_slam_command(CLI::App& app) {
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--max-scans", args->max_scans, "stop after this many scans (0 = all)");
   app.add_flag("--skip-bad-lines", args->skip_bad_lines, "count and skip malformed log lines");
+  add_bag_options(app, args->bag);
   app.add_flag("--predict", args->predict, "P-SLAM: predict the region ahead and use it in the weights");
   app.add_option("--method", args->method,
                  "rbpf (grid RBPF), segslam (segmented RBPF with submaps) or hybrid (HybridSLAM landmarks; "
@@ -193,7 +194,7 @@ Run add_slam_command(CLI::App& app) {
   return [args] {
     if (args->method == "segslam") {
       return run_segslam({args->log, args->out, args->config, args->segslam_config, args->particles, args->seed,
-                          args->threads, args->max_scans, args->skip_bad_lines, args->map_samples});
+                          args->threads, args->max_scans, args->skip_bad_lines, args->map_samples, args->bag});
     }
     return run_slam(*args);
   };

@@ -11,6 +11,7 @@
 #include "hybrid_pictures.hpp"
 #include "lookahead/slam/eval/absolute_error.hpp"
 #include "lookahead/slam/eval/relative_error.hpp"
+#include "lookahead/slam/io/tum_trajectory.hpp"
 #include "lookahead/slam/eval/scan_matched_reference.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
 #include "lookahead/slam/hybrid/hybrid_config.hpp"
@@ -19,6 +20,7 @@
 #include "lookahead/slam/io/trajectory_io.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "run_json.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -131,6 +133,7 @@ int run_slam_hybrid(const slam::LaserLog& log, const SlamHybridArgs& a) {
     odometry.push_back(log.scans.front().odometry.compose(log.scans.front().odometry.between(log.scans[i].odometry)));
   }
   slam::write_trajectory(a.out + "/trajectory.txt", stamped);
+  slam::write_tum_trajectory(a.out + "/trajectory.tum", stamped);  // for evo
   slam::write_trajectory(a.out + "/trajectory_logger_time.txt", logger_time);
   write_landmarks(a.out + "/landmarks.txt", r.features);
   const slam::ProbabilityMap map = occupancy_along(log, r.trajectory);
@@ -151,8 +154,7 @@ int run_slam_hybrid(const slam::LaserLog& log, const SlamHybridArgs& a) {
   j["x_real_time"] = duration / wall;
   j["peak_memory_mb"] = peak_memory_mb();
   j["error_vs_reference"] = score(logger_time, log, reference_log_for(log.path));
-  j["parameters_yaml"] = dump_hybrid_config({options.filter, {}, {}, options.landmarks});
-  std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
+  write_run_json(a.out, j, 1, dump_hybrid_config({options.filter, {}, {}, options.landmarks}));
   spdlog::info("done in {:.1f} s ({:.1f}x real time): {} landmarks from {} observations, {} fusions; wrote {}/map.png",
                wall, duration / wall, r.features.size(), r.observations, r.fusions, a.out);
   return 0;

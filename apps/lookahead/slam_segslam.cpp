@@ -14,10 +14,13 @@
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
 #include "lookahead/slam/segslam/min_entropy_search.hpp"
+#include "lookahead/slam/io/tum_trajectory.hpp"
 #include "lookahead/slam/segslam/seg_slam.hpp"
 #include "lookahead/slam/segslam/segment_picture.hpp"
 #include "process_stats.hpp"
+#include "log_input.hpp"
 #include "progress_bar.hpp"
+#include "run_json.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -27,11 +30,8 @@ using slam::segslam::SegSlam;
 slam::LaserLog read_log(const SegSlamArgs& a) {
   slam::LogReadOptions read;
   read.skip_bad_lines = a.skip_bad_lines;
-  slam::LaserLog log = slam::read_laser_log(a.log, read);
-  if (log.bad_lines > 0) spdlog::warn("skipped {} malformed lines; first: {}", log.bad_lines, log.first_bad_line_message);
-  if (log.scans.empty()) throw std::runtime_error(a.log + ": no laser scans in the log");
-  if (a.max_scans > 0 && log.scans.size() > a.max_scans) log.scans.resize(a.max_scans);
-  return log;
+  read.bag = a.bag;
+  return load_laser_log(a.log, read, a.max_scans);
 }
 
 // NAME.txt (the log's time stamps) and NAME_logger_time.txt (the logger's, for lookahead eval
@@ -44,6 +44,7 @@ void write_trajectory_files(const std::string& out, const std::string& name, con
     logger.push_back({log.scans[i].logger_timestamp, path[i]});
   }
   slam::write_trajectory(out + "/" + name + ".txt", stamped);
+  slam::write_tum_trajectory(out + "/" + name + ".tum", stamped);  // for evo
   slam::write_trajectory(out + "/" + name + "_logger_time.txt", logger);
 }
 
@@ -106,7 +107,7 @@ int run_segslam(const SegSlamArgs& a) {
   std::filesystem::create_directories(a.out);
   slam::write_map(best.best.map, a.out, "map");
   write_trajectory_files(a.out, "trajectory", log, filter.trajectory_at_every_scan(filter.best_particle()));
-  // The path the map was pasted from (bench/segslam/csail_error.py --global scores maps by it).
+  // The path the map was pasted from (bench/runs/csail_error.py --global scores maps by it).
   write_trajectory_files(a.out, "map_trajectory", log, slam::segslam::sample_trajectory_at_every_scan(filter, best.best));
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.scans) odometry.push_back(s.odometry);
@@ -131,9 +132,8 @@ int run_segslam(const SegSlamArgs& a) {
   j["chain_entropy_nats_m2"] = best.chain_entropy;  // 0 with offline.particle_chain off
   j["map_is_particle_chain"] = best.best.chain;
   j["map_particle"] = best.best.particle;
-  j["parameters_yaml"] = slam::dump_rbpf_options(rbpf);
-  j["segslam_parameters_yaml"] = slam::dump_segslam_options(options);
-  std::ofstream(a.out + "/run.json") << j.dump(2) << "\n";
+  write_run_json(a.out, j, rbpf.threads,
+                 slam::dump_rbpf_options(rbpf) + "segslam:\n" + indent(slam::dump_segslam_options(options)));
   spdlog::info("done: filter {:.1f} s, offline search {:.1f} s ({} samples{}, min entropy {:.1f}{}); {} segments, {} matches; wrote {}/map.png",
                filter_s, offline_s, best.entropies.size(), options.offline.particle_chain ? " and the best particle's chain" : "",
                best.best.entropy, best.best.chain ? ", the chain's" : "", filter.segmap().segment_count(),

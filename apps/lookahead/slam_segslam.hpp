@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <string>
 
+#include "lookahead/slam/io/laser_log.hpp"
+
 namespace lookahead::app {
 
 struct SegSlamArgs {
@@ -18,6 +20,7 @@ struct SegSlamArgs {
   std::size_t max_scans = 0;
   bool skip_bad_lines = false;
   int map_samples = -1;        ///< overrides offline.map_samples
+  slam::BagReadOptions bag;
 };
 
 /// Maps the log with SegSLAM and writes map.pgm/.yaml (the minimum-entropy map sample),

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "lookahead/exploration/carmen_writer.hpp"
+#include "lookahead/exploration/run_log.hpp"
 #include "lookahead/exploration/prediction_targets.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
@@ -79,7 +79,7 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
 Mission::~Mission() = default;
 
 void Mission::record_log(const std::string& path) {
-  log_ = std::make_unique<CarmenWriter>(path, options_.laser);
+  log_ = open_run_log(path, options_.laser);  // CARMEN log, or a ROS1 bag for a .bag path
 }
 
 const slam::OccupancyGrid& Mission::map() const {

@@ -239,7 +239,7 @@ std::string dump_mission_options(const MissionOptions& options) {
   std::string slam_text = slam::dump_rbpf_options(options.slam), indented;
   std::istringstream in(slam_text);
   for (std::string l; std::getline(in, l);) indented += "  " + l + "\n";
-  return "# lookahead mission options (config/mission format: every key, with its unit)\n" +
+  return "# lookahead mission defaults (lookahead config dump mission): every key, with its unit\n" +
          d.str() +
          "# RBPF options in the config/slam format. Derived, whatever is written here:\n"
          "# filter.seed from mission.seed, likelihood.max_range from laser.max_range.\n"

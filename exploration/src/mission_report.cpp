@@ -9,9 +9,11 @@
 
 #include "lookahead/exploration/hypothesis_pictures.hpp"
 #include "lookahead/exploration/line_plot.hpp"
+#include "lookahead/exploration/mission_config.hpp"
 #include "lookahead/exploration/mission_picture.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "lookahead/slam/io/provenance_json.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
 
 namespace lookahead::exploration {
@@ -153,7 +155,11 @@ void write_mission_outputs(const Mission& m, const MissionSummary& s, const std:
   const double dt = m.options().laser.period() * 5;  // one pose kept every 5 scans
   for (std::size_t i = 0; i < m.estimated_path().size(); ++i) traj.push_back({m.options().laser.period() + dt * static_cast<double>(i), m.estimated_path()[i]});
   slam::write_trajectory(dir + "/trajectory.txt", traj);
-  std::ofstream(dir + "/run.json") << to_json(s);
+  // The figures, then where they come from and the whole effective configuration.
+  nlohmann::json j = nlohmann::json::parse(to_json(s));
+  j["provenance"] = slam::to_json(slam::provenance(m.options().slam.threads));
+  j["configuration_yaml"] = dump_mission_options(m.options());
+  std::ofstream(dir + "/run.json") << j.dump(2) << "\n";
   if (m.lookahead() && m.lookahead()->options().pictures)
     write_hypothesis_pictures(*m.lookahead(), m.world(), dir + "/predictions");
 }

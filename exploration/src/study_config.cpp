@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "lookahead/exploration/mission_config.hpp"
+#include "lookahead/exploration/study_keys.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::exploration {
@@ -36,9 +37,7 @@ class StudyParser {
   StudySpec parse(const YAML::Node& root) {
     StudySpec s;
     s.source = source_;
-    check_keys(root, "",
-               {"name", "out", "worlds", "strategies", "seeds", "pose_source", "particles",
-                "time_limit", "coverage_goal", "mission"});
+    check_keys(root, "", key_names(study_keys()));
     s.name = get<std::string>(required(root, "name", root), "name");
     if (!is_label(s.name)) fail(root["name"], "name", "use letters, digits, '.', '_' and '-' only");
     s.out = root["out"] ? get<std::string>(root["out"], "out") : "out/study/" + s.name;
@@ -103,7 +102,7 @@ class StudyParser {
   }
 
   StudyWorld world(const YAML::Node& w) const {
-    check_keys(w, "worlds.", {"name", "resolution", "pixel_rule", "start", "label", "seed"});
+    check_keys(w, "worlds.", key_names(study_world_keys()));
     StudyWorld sw;
     sw.line = static_cast<std::size_t>(w.Mark().line + 1);
     const std::string name = get<std::string>(required(w, "name", w), "worlds.name");

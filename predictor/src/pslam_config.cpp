@@ -16,7 +16,7 @@ PslamOptions load_pslam_options(const std::string& path) {
 }
 
 std::string dump_pslam_options(const PslamOptions& options) {
-  return "# lookahead SLAM defaults (lookahead config --dump)\n" + slam::dump_rbpf_options(options.rbpf) +
+  return "# lookahead slam defaults (lookahead config dump slam)\n" + slam::dump_rbpf_options(options.rbpf) +
          "# P-SLAM on a log (lookahead slam --predict): the predictor and its targets\n" +
          dump_log_prediction_options(options.prediction);
 }

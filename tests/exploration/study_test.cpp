@@ -21,37 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-TEST(IncompleteBeta, ClosedForms) {
-  for (const double x : {0.0, 0.1, 0.5, 0.93, 1.0})
-    EXPECT_NEAR(regularized_incomplete_beta(1, 1, x), x, 1e-14);
-  EXPECT_NEAR(regularized_incomplete_beta(2.5, 1, 0.6), std::pow(0.6, 2.5), 1e-13);  // x^a
-  EXPECT_NEAR(regularized_incomplete_beta(1, 3.5, 0.2), 1 - std::pow(0.8, 3.5),
-              1e-13);  // 1 - (1-x)^b
-  for (const double a : {0.5, 3.7, 50.0})
-    EXPECT_NEAR(regularized_incomplete_beta(a, a, 0.5), 0.5, 1e-12);
-  // I_0.3(2, 3) = sum_{j=2..4} C(4, j) 0.3^j 0.7^(4-j) = 0.2646 + 0.0756 + 0.0081.
-  EXPECT_NEAR(regularized_incomplete_beta(2, 3, 0.3), 0.3483, 1e-12);
-  EXPECT_THROW((void)regularized_incomplete_beta(0, 1, 0.5), std::invalid_argument);
-  EXPECT_THROW((void)regularized_incomplete_beta(1, 1, 1.5), std::invalid_argument);
-}
-
-// I_p(k, n - k + 1) = P(Binomial(n, p) >= k): an oracle for whole parameters on both sides
-// of the continued fraction's switch point.
-TEST(IncompleteBeta, MatchesTheBinomialTail) {
-  for (const double p : {0.05, 0.4, 0.6, 0.97}) {
-    const int n = 60;
-    for (const int k : {1, 10, 25, 40, 59}) {
-      double tail = 0.0;
-      for (int j = k; j <= n; ++j) {
-        tail += std::exp(std::lgamma(n + 1.0) - std::lgamma(j + 1.0) - std::lgamma(n - j + 1.0) +
-                         j * std::log(p) + (n - j) * std::log1p(-p));
-      }
-      EXPECT_NEAR(regularized_incomplete_beta(k, n - k + 1, p), tail, 1e-11)
-          << "p " << p << " k " << k;
-    }
-  }
-}
-
 TEST(StudentT, TwoSidedPValues) {
   EXPECT_NEAR(student_t_two_sided_p(2.0, 10), 0.0733880348, 1e-9);  // tables: 0.0734
   EXPECT_NEAR(student_t_two_sided_p(-2.0, 10), 0.0733880348, 1e-9);
@@ -61,6 +30,15 @@ TEST(StudentT, TwoSidedPValues) {
               1e-12);                                             // 1 - t / sqrt(t^2 + 2)
   EXPECT_NEAR(student_t_two_sided_p(1.959964, 1e7), 0.05, 1e-5);  // the normal limit
   EXPECT_DOUBLE_EQ(student_t_two_sided_p(0.0, 7), 1.0);
+}
+
+TEST(StudentT, QuantilesMatchTables) {
+  EXPECT_NEAR(student_t_quantile(0.975, 4), 2.776445, 1e-6);
+  EXPECT_NEAR(student_t_quantile(0.975, 19), 2.093024, 1e-6);
+  EXPECT_NEAR(student_t_quantile(0.025, 19), -2.093024, 1e-6);
+  EXPECT_NEAR(student_t_quantile(0.95, 1), 6.313752, 1e-6);
+  EXPECT_THROW((void)student_t_quantile(1.0, 3), std::invalid_argument);
+  EXPECT_THROW((void)student_t_quantile(0.9, 0), std::invalid_argument);
 }
 
 // a: mean 3, variance 2.5; b: mean 6, variance 10. se^2 = 2.5/5 + 10/5 = 2.5, so

@@ -59,7 +59,7 @@ TEST(HybridCli, ScoresCsailAgainstItsCorrectedLogWithTheCsailConfig) {
   EXPECT_NE(e["reference"].get<std::string>().find("csail.corrected.log"), std::string::npos);
   EXPECT_GT(e["relations_used"].get<int>(), 50);  // ~1 corrected scan per 5 raw ones
   EXPECT_LT(e["trans_mean_m"].get<double>(), 0.5);
-  EXPECT_NE(j["parameters_yaml"].get<std::string>().find("split_tolerance: 0.12"), std::string::npos);
+  EXPECT_NE(j["configuration_yaml"].get<std::string>().find("split_tolerance: 0.12"), std::string::npos);
   EXPECT_GT(j["landmark_observations"].get<int>(), 4 * 400) << "csail.yaml should give several landmarks per scan";
   fs::remove_all(out);
 }

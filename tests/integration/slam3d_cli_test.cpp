@@ -110,7 +110,7 @@ TEST_F(Slam3dCli, SegslamReadsTheLockingKeysAndCountsLockedAndMerged) {
                        dir / "log.txt");
   ASSERT_EQ(r.code, 0) << r.output;
   const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "run.json"));
-  const std::string params = j["segslam_parameters_yaml"].get<std::string>();
+  const std::string params = j["configuration_yaml"].get<std::string>();
   for (const char* key : {"lock: true", "lock_max_error: 0.07", "merge: true", "merge_max_error: 0.09"}) {
     EXPECT_NE(params.find(key), std::string::npos) << key << " in\n" << params;
   }

@@ -19,7 +19,7 @@ TEST(PslamConfig, ShippedDefaultsMatchTheCode) {
   ASSERT_TRUE(in) << "config/slam/default.yaml missing";
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_EQ(text.str(), dump_pslam_options({})) << "regenerate with: lookahead config --dump > config/slam/default.yaml";
+  EXPECT_EQ(text.str(), dump_pslam_options({})) << "regenerate with: lookahead config dump slam > config/slam/default.yaml";
   const PslamOptions shipped = load_pslam_options(std::string(LOOKAHEAD_SOURCE_DIR) + "/config/slam/default.yaml");
   EXPECT_EQ(dump_pslam_options(shipped), dump_pslam_options({}));
 }

@@ -93,7 +93,7 @@ std::string dump_slam3d_options(const Slam3dOptions& options) {
   Slam3dOptions copy = options;
   config::SectionDumper dumper;
   visit_sections(copy, dumper);
-  return "# lookahead slam3d defaults (lookahead slam3d --dump-config)\n" + dumper.str();
+  return "# lookahead slam3d defaults (lookahead config dump slam3d)\n" + dumper.str();
 }
 
 }  // namespace lookahead::slam

@@ -2,28 +2,21 @@
 #include "lookahead/slam/hybrid/jcbb.hpp"
 
 #include <Eigen/Cholesky>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <cmath>
 #include <stdexcept>
 
 namespace lookahead::slam::hybrid {
 namespace {
 
-double normal_quantile(double p) {
-  // Acklam's rational approximation is overkill here: the levels used are fixed.
-  if (p >= 0.999) return 3.090;
-  if (p >= 0.995) return 2.576;
-  if (p >= 0.99) return 2.326;
-  if (p >= 0.975) return 1.960;
-  if (p >= 0.95) return 1.645;
-  return 1.282;
-}
-
 class Search {
  public:
   Search(int items, const std::vector<PairingCandidate>& c, const Eigen::MatrixXd& p,
          double confidence, int max_nodes)
       : items_(items), candidates_(c), p_(p), confidence_(confidence), max_nodes_(max_nodes),
-        by_item_(static_cast<std::size_t>(items)) {
+        by_item_(static_cast<std::size_t>(items)), gates_(2 * static_cast<std::size_t>(items) + 1) {
+    // The joint gate for every dimension (2 per pair), once: a quantile is an iterative inversion.
+    for (std::size_t m = 1; m < gates_.size(); ++m) gates_[m] = chi2_quantile(static_cast<int>(m), confidence);
     for (std::size_t k = 0; k < c.size(); ++k) by_item_[static_cast<std::size_t>(c[k].item)].push_back(k);
     // H_k P once per candidate: a node then costs O(m^2 n) for its m pairs, not O(m n^2).
     hp_.reserve(c.size());
@@ -57,7 +50,7 @@ class Search {
     }
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(s);
     const double nis = nu.dot(ldlt.solve(nu));
-    return nis <= chi2_quantile(static_cast<int>(m), confidence_) ? nis : INFINITY;
+    return nis <= gates_[static_cast<std::size_t>(m)] ? nis : INFINITY;
   }
 
   // `nis` is the joint NIS of `chosen`. Adding pairings never lowers a joint NIS (the
@@ -105,6 +98,7 @@ class Search {
   const std::vector<PairingCandidate>& candidates_;
   const Eigen::MatrixXd& p_;
   double confidence_;
+  std::vector<double> gates_;  ///< gates_[m]: the `confidence` chi-square quantile, m dof
   int max_nodes_;
   int nodes_ = 0;
   std::vector<std::vector<std::size_t>> by_item_;
@@ -116,9 +110,10 @@ class Search {
 
 double chi2_quantile(int dof, double confidence) {
   if (dof < 1) throw std::invalid_argument("chi2_quantile: dof must be >= 1");
-  const double k = dof, z = normal_quantile(confidence);
-  const double a = 2.0 / (9.0 * k);
-  return k * std::pow(1.0 - a + z * std::sqrt(a), 3);
+  if (!(confidence > 0 && confidence < 1)) {
+    throw std::invalid_argument("chi2_quantile: confidence must be in (0, 1)");
+  }
+  return boost::math::quantile(boost::math::chi_squared(dof), confidence);
 }
 
 JcbbResult jcbb(int items, const std::vector<PairingCandidate>& candidates,

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/hybrid/moment_matching.hpp"
 
+#include "lookahead/slam/hybrid/jcbb.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <map>
@@ -147,7 +149,7 @@ GaussianMap moment_match(const std::vector<Particle>& particles, double min_exis
 }
 
 double outlier_weight(const std::vector<Particle>& particles, const PoseGaussian& fit) {
-  constexpr double kChi2Of99PercentIn3Dof = 11.34;
+  static const double kChi2Of99PercentIn3Dof = chi2_quantile(3, 0.99);
   const Eigen::Matrix3d info = (fit.covariance + 1e-12 * Eigen::Matrix3d::Identity()).inverse();
   const Eigen::Vector3d mean = pose_vector(fit.mean, fit.mean.theta);
   double outside = 0.0;

@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <unordered_set>
 
 #include "carmen_fields.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
@@ -29,8 +31,11 @@ struct OdomSample {
   Pose2 pose;
 };
 
+constexpr std::array<const char*, 4> kStreamNames = {"FLASER", "ROBOTLASER1", "RAWLASER1", "RLASER"};
+
 struct ReaderState {
   std::map<std::string, double> params;
+  std::map<std::string, std::size_t> counts;  // lines per message kind
   std::vector<OdomSample> odometry;
   // Streams in order of preference (see file comment).
   std::array<std::vector<LaserScan>, 4> streams;
@@ -151,6 +156,7 @@ void parse_param(const Fields& f, ReaderState& s) {
 
 void parse_line(const Fields& f, ReaderState& s, const LogReadOptions& o) {
   const std::string_view kind = f.token(0);
+  ++s.counts[std::string(kind)];
   if (kind == "FLASER") parse_flaser(f, s, o, false);
   else if (kind == "RLASER") parse_flaser(f, s, o, true);
   else if (kind == "ROBOTLASER1") parse_robotlaser(f, s, o);
@@ -172,6 +178,47 @@ Pose2 odometry_at(const std::vector<OdomSample>& odom, double t) {
   const double a = span > 0 ? (t - lo->t) / span : 0.0;
   const Pose2 d = lo->pose.between(hi->pose);
   return lo->pose.compose({a * d.x, a * d.y, a * d.theta});
+}
+
+std::size_t hash_ranges(const std::vector<float>& ranges) {
+  std::size_t h = ranges.size();
+  for (const float r : ranges) h = h * 1000003u ^ std::hash<float>{}(r);
+  return h;
+}
+
+// Scans of the other streams whose ranges equal one of the chosen stream's: the same
+// measurement written in several message kinds (MIT CSAIL writes each scan three times).
+std::size_t count_duplicates(const ReaderState& s, std::size_t chosen) {
+  std::unordered_set<std::size_t> seen;
+  for (const LaserScan& scan : s.streams[chosen]) seen.insert(hash_ranges(scan.ranges));
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < s.streams.size(); ++k) {
+    if (k == chosen) continue;
+    for (const LaserScan& scan : s.streams[k]) n += seen.count(hash_ranges(scan.ranges));
+  }
+  return n;
+}
+
+// RAWLASER1 takes its odometry from ODOM messages: scans outside their span have none.
+std::size_t raw_scans_without_odometry(const ReaderState& s) {
+  if (s.odometry.empty()) return s.streams[2].size();
+  std::size_t n = 0;
+  for (const LaserScan& scan : s.streams[2]) {
+    n += scan.timestamp < s.odometry.front().t || scan.timestamp > s.odometry.back().t;
+  }
+  return n;
+}
+
+void fill_summary(const ReaderState& s, std::size_t chosen, LaserLog& log) {
+  for (const auto& [kind, count] : s.counts) log.messages.push_back({"", kind, count});
+  log.scan_source = kStreamNames[chosen];
+  log.duplicate_scans = count_duplicates(s, chosen);
+  if (chosen == 2) {
+    log.odometry_source = "ODOM, interpolated to the scan stamps";
+    log.scans_without_odometry = raw_scans_without_odometry(s);
+  } else {
+    log.odometry_source = std::string(kStreamNames[chosen]) + " odometry fields";
+  }
 }
 
 }  // namespace
@@ -202,11 +249,11 @@ LaserLog read_carmen_log(const std::string& path, const LogReadOptions& options)
   for (const std::size_t i : state.raw_needs_odometry) {
     state.streams[2][i].odometry = odometry_at(state.odometry, state.streams[2][i].timestamp);
   }
-  for (auto& st : state.streams) {
-    if (!st.empty()) {
-      log.scans = std::move(st);
-      break;
-    }
+  for (std::size_t k = 0; k < state.streams.size(); ++k) {
+    if (state.streams[k].empty()) continue;
+    fill_summary(state, k, log);
+    log.scans = std::move(state.streams[k]);
+    break;
   }
   return log;
 }
@@ -217,6 +264,7 @@ LaserLog read_laser_log(const std::string& path, const LogReadOptions& options) 
            path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
   if (ends_with(".rawlog") || ends_with(".rawlog.gz")) return read_mrpt_rawlog(path, options);
+  if (ends_with(".bag")) return read_ros_bag(path, options);
   return read_carmen_log(path, options);
 }
 

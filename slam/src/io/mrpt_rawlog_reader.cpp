@@ -66,6 +66,7 @@ class RawlogReader {
   /// Dispatches one top-level object of the file.
   void on_object(const CSerializable::Ptr& object) {
     if (!object) throw BadRecord{"record", "nullptr", "empty object in the stream"};
+    count(object->GetRuntimeClass()->className);
     if (const auto actions = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(object)) {
       on_actions(*actions);
     } else if (const auto frame = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(object)) {
@@ -94,6 +95,7 @@ class RawlogReader {
 
   void on_observation(const mrpt::obs::CObservation::Ptr& obs, bool use_odometry) {
     if (!obs) return;
+    if (!use_odometry) count(obs->GetRuntimeClass()->className);  // inside a sensory frame
     if (const auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs)) {
       // Rawlogs are written in time order, so the last reading seen is the latest one at or
       // before any scan that follows it; a scan with none yet keeps the previous pose.
@@ -104,6 +106,16 @@ class RawlogReader {
       log_.scans.push_back(to_scan(*scan));
     }
     // Other sensors (cameras, GPS, ...) are not used by the filter and are skipped.
+  }
+
+  void count(const std::string& kind) {
+    for (MessageCount& m : log_.messages) {
+      if (m.type == kind) {
+        ++m.count;
+        return;
+      }
+    }
+    log_.messages.push_back({"", kind, 1});
   }
 
   LaserScan to_scan(const mrpt::obs::CObservation2DRangeScan& obs) const {
@@ -208,6 +220,8 @@ LaserLog read_mrpt_rawlog(const std::string& path, const LogReadOptions& options
   RawlogReader reader(options, log);
   // A broken stream ends the read; with skip_bad_lines what came before it is kept.
   read_records(archive, reader, log, options);
+  log.scan_source = "CObservation2DRangeScan";
+  log.odometry_source = "CActionRobotMovement2D or CObservationOdometry";
   return log;
 }
 

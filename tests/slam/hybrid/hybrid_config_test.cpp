@@ -27,8 +27,8 @@ TEST(HybridConfig, ShippedDefaultsMatchTheCode) {
   ASSERT_TRUE(in) << "config/hybrid/default.yaml missing";
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_EQ(text.str(), "# lookahead HybridSLAM defaults (lookahead hybrid-sim --dump-config)\n" + dump_hybrid_config({}))
-      << "regenerate with: lookahead hybrid-sim --dump-config > config/hybrid/default.yaml";
+  EXPECT_EQ(text.str(), "# lookahead hybrid defaults (lookahead config dump hybrid)\n" + dump_hybrid_config({}))
+      << "regenerate with: lookahead config dump hybrid > config/hybrid/default.yaml";
 }
 
 // `slam --method hybrid --config config/hybrid/default.yaml` used to replace the log-mode

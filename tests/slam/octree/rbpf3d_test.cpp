@@ -70,7 +70,7 @@ TEST(Slam3dConfig, DefaultYamlMatchesTheCode) {
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str(), dump_slam3d_options({}))
-      << "regenerate with: lookahead slam3d --dump-config > config/slam3d/default.yaml";
+      << "regenerate with: lookahead config dump slam3d > config/slam3d/default.yaml";
   const Slam3dOptions back = parse_slam3d_options(text.str(), "default.yaml");
   EXPECT_EQ(dump_slam3d_options(back), text.str());
 }

@@ -16,7 +16,7 @@ TEST(SegSlamConfig, ShippedDefaultsMatchTheCode) {
   ASSERT_TRUE(in) << "config/segslam/default.yaml missing";
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_EQ(text.str(), "# lookahead SegSLAM defaults\n" + dump_segslam_options({}));
+  EXPECT_EQ(text.str(), "# lookahead segslam defaults (lookahead config dump segslam)\n" + dump_segslam_options({}));
 }
 
 TEST(SegSlamConfig, DumpReadsBack) {

@@ -14,29 +14,30 @@
 #include <string>
 
 #include "lookahead/exploration/laser_simulator.hpp"
+#include "lookahead/exploration/run_log.hpp"
 #include "lookahead/slam/geometry/pose2.hpp"
 #include "lookahead/slam/sensor/laser_scan.hpp"
 
 namespace lookahead::exploration {
 
-class CarmenWriter {
+class CarmenWriter : public RunLog {
  public:
   /// Creates `path` and writes the PARAM header for `laser`; throws slam::ParseError naming
   /// the file when it cannot be opened.
   CarmenWriter(const std::string& path, const LaserOptions& laser,
                std::string host = "lookahead-sim");
-  ~CarmenWriter();
+  ~CarmenWriter() override;
   CarmenWriter(const CarmenWriter&) = delete;
   CarmenWriter& operator=(const CarmenWriter&) = delete;
 
   /// tv [m/s], rv [rad/s]: the commanded velocities; t [s] is written as both timestamps.
-  void odometry(const slam::Pose2& odom, double tv, double rv, double t);
+  void odometry(const slam::Pose2& odom, double tv, double rv, double t) override;
   /// FLASER from scan.ranges, scan.odometry, scan.laser_offset and scan.timestamp.
-  void scan(const slam::LaserScan& scan);
-  void true_pose(const slam::Pose2& truth, const slam::Pose2& odom, double t);
+  void scan(const slam::LaserScan& scan) override;
+  void true_pose(const slam::Pose2& truth, const slam::Pose2& odom, double t) override;
   /// Flushes and closes; throws slam::ParseError if any write failed. The destructor closes
   /// without throwing.
-  void close();
+  void close() override;
 
  private:
   void tail(double t);

@@ -29,7 +29,7 @@
 
 namespace lookahead::exploration {
 
-class CarmenWriter;
+class RunLog;
 
 enum class MissionStatus {
   kRunning,
@@ -60,7 +60,8 @@ class Mission {
   Mission(const World& world, const slam::Pose2& start, const MissionOptions& options);
   ~Mission();
 
-  /// Writes the simulated run as a CARMEN log (ODOM + FLASER) that `lookahead slam` replays.
+  /// Writes the simulated run as a log `lookahead slam` replays: a ROS1 bag for a .bag path,
+  /// else a CARMEN log (ODOM + FLASER).
   void record_log(const std::string& path);
   /// One laser period. Returns the status after it.
   MissionStatus step();
@@ -151,7 +152,7 @@ class Mission {
   bool squeezing_ = false;     ///< the current path was planned without the safety margin
   /// Since the last squeeze the robot has not stood on a cell the safety margin leaves free.
   bool tight_ = false;
-  std::unique_ptr<CarmenWriter> log_;
+  std::unique_ptr<RunLog> log_;
   slam::LaserScan last_scan_;
 
   MissionStatus status_ = MissionStatus::kRunning;

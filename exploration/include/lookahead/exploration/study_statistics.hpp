@@ -2,9 +2,7 @@
 // The statistics of a study: sample mean and standard deviation, and Welch's unequal-
 // variance t-test (Welch, "The generalization of 'Student's' problem when several different
 // population variances are involved", Biometrika 34, 1947) with the Welch-Satterthwaite
-// degrees of freedom. The p-value comes from the Student t distribution through the
-// regularized incomplete beta function, evaluated by its continued fraction (Abramowitz &
-// Stegun 26.5.8; modified Lentz evaluation).
+// degrees of freedom. The Student t distribution is Boost.Math's.
 #pragma once
 
 #include <string>
@@ -16,12 +14,11 @@ namespace lookahead::exploration {
 /// Sample standard deviation (divides by n - 1); 0 for fewer than two values.
 [[nodiscard]] double sample_std(const std::vector<double>& values);
 
-/// I_x(a, b) = B(x; a, b) / B(a, b) for a, b > 0 and x in [0, 1] (throws
-/// std::invalid_argument outside), accurate to about 1e-12.
-[[nodiscard]] double regularized_incomplete_beta(double a, double b, double x);
-
 /// P(|T| >= |t|) for T ~ Student t with `df` > 0 degrees of freedom (df need not be whole).
 [[nodiscard]] double student_t_two_sided_p(double t, double df);
+/// The p-quantile of Student's t with `df` > 0 degrees of freedom, p in (0, 1) (for
+/// confidence intervals: student_t_quantile(0.975, n - 1) for 95 %).
+[[nodiscard]] double student_t_quantile(double p, double df);
 
 struct WelchResult {
   bool defined = false;  ///< false: `why` says what is missing (too few runs, no variance)

@@ -35,7 +35,7 @@ struct JcbbResult {
 JcbbResult jcbb(int items, const std::vector<PairingCandidate>& candidates,
                 const Eigen::MatrixXd& covariance, double confidence, int max_nodes);
 
-/// Chi-square quantile (Wilson-Hilferty approximation; within 1 % for dof >= 2 at 0.95-0.999).
+/// The `confidence` quantile of the chi-square distribution with `dof` degrees of freedom.
 double chi2_quantile(int dof, double confidence);
 
 }  // namespace lookahead::slam::hybrid
