@@ -11,8 +11,8 @@
 namespace lookahead::exploration {
 namespace {
 
-// 1 world x {nearest, utility} x seeds {1, 2, 3}: nearest reaches 95 % at 100, 110, 130 s; utility at 90, 100, -
-// (seed 3 trapped); nearest seed 2 is not finished.
+// 1 world x {nearest, utility} x seeds {1, 2, 3}: nearest reaches 95 % at 100, 110, 130 s; utility
+// at 90, 100, - (seed 3 trapped); nearest seed 2 is not finished.
 StudyResult hand_made(const StudySpec& spec) {
   StudyResult result;
   const std::vector<StudyRun> plan = plan_runs(spec);
@@ -35,10 +35,12 @@ StudyResult hand_made(const StudySpec& spec) {
 
 TEST(StudyTables, OverallStatusAndPairs) {
   const StudySpec spec = parse_study(
-      "name: t\nworlds: [{name: maze}]\nstrategies: [nearest, utility]\nseeds: [1, 2, 3]\n", "t.yaml", ".");
+      "name: t\nworlds: [{name: maze}]\nstrategies: [nearest, utility]\nseeds: [1, 2, 3]\n",
+      "t.yaml", ".");
   const StudyResult result = hand_made(spec);
   EXPECT_EQ(overall_line(spec, result),
-            "4 of 5 missions reached the coverage goal of 0.95 (nearest 2/2, utility 2/3); 1 of 6 planned "
+            "4 of 5 missions reached the coverage goal of 0.95 (nearest 2/2, utility 2/3); 1 of 6 "
+            "planned "
             "missions are not finished.");
   const StudyTable status = status_table(spec, result);
   ASSERT_EQ(status.rows.size(), 3u);
@@ -64,7 +66,8 @@ TEST(StudyTables, OverallStatusAndPairs) {
 TEST(StudyHtml, EscapesAndLinksEveryMap) {
   EXPECT_EQ(html_escape("<a href=\"x\">&'"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;");
   const StudySpec spec = parse_study(
-      "name: t\nworlds: [{name: maze}]\nstrategies: [nearest, utility]\nseeds: [1, 2, 3]\n", "t.yaml", ".");
+      "name: t\nworlds: [{name: maze}]\nstrategies: [nearest, utility]\nseeds: [1, 2, 3]\n",
+      "t.yaml", ".");
   const std::string html = study_report_html(spec, hand_made(spec));
   std::size_t maps = 0;
   for (std::size_t at = html.find("<a href=\"runs/"); at != std::string::npos;
@@ -72,7 +75,7 @@ TEST(StudyHtml, EscapesAndLinksEveryMap) {
     ++maps;
   EXPECT_EQ(maps, 5u);
   EXPECT_NE(html.find("<li>maze__nearest__2</li>"), std::string::npos);  // listed as not finished
-  EXPECT_EQ(html.find("http"), std::string::npos);                 // nothing from the network
+  EXPECT_EQ(html.find("http"), std::string::npos);                       // nothing from the network
 }
 
 }  // namespace
