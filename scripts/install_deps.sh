@@ -12,6 +12,7 @@ packages=(
   libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev zlib1g-dev
   libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  slurm-wlm munge chromium fonts-dejavu-core
 )
 
 missing=()

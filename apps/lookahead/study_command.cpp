@@ -1,68 +1,61 @@
 // SPDX-License-Identifier: MIT
-// `lookahead study STUDY.yaml`: worlds x strategies x seeds of exploration missions on all
-// cores, resumable, with results.csv, summary.md (means, Welch's t-tests) and plots.
-#include <fmt/format.h>
-#include <spdlog/spdlog.h>
-
+// `lookahead study [plan|run|merge|slurm] STUDY.yaml`: worlds x strategies x seeds of
+// exploration missions, locally on all cores or as a Slurm job array, resumable, with
+// results.csv, summary.md (means, Welch's and paired t-tests), plots and report.html.
 #include <memory>
-#include <thread>
 
 #include "commands.hpp"
-#include "lookahead/exploration/mission_config.hpp"
-#include "lookahead/exploration/study.hpp"
-#include "lookahead/exploration/study_report.hpp"
-#include "lookahead/planner/ompl_logging.hpp"
-#include "progress_bar.hpp"
+#include "lookahead/slam/io/parse_error.hpp"
+#include "study_verbs.hpp"
 
 namespace lookahead::app {
 namespace {
 
-struct StudyArgs {
-  std::string file;
-  std::string out;    // overrides the study's out
-  unsigned jobs = 0;  // 0 = every core
-};
-
-int run_study_command(const StudyArgs& a) {
-  planner::set_ompl_log_level(planner::OmplLogLevel::kWarn);
-  exploration::StudySpec spec = exploration::load_study(a.file);
-  if (!a.out.empty()) spec.out = a.out;
-  const unsigned jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
-  spdlog::info(
-      "study {}: {} world(s) x {} strateg{} x {} seed(s), pose {}, time limit {:g} s; {} "
-      "worker(s); out {}",
-      spec.name, spec.worlds.size(), spec.strategies.size(),
-      spec.strategies.size() == 1 ? "y" : "ies", spec.seeds.size(),
-      exploration::pose_source_name(spec.mission.pose_source), spec.mission.time_limit, jobs,
-      spec.out);
-  std::unique_ptr<ProgressBar> bar;  // made at the first report, which knows how many runs remain
-  const exploration::StudyResult result = exploration::run_study(
-      spec,
-      [&](const exploration::StudyProgress& p) {
-        if (!bar) {
-          if (p.reused > 0) spdlog::info("{} run(s) finished earlier are reused", p.reused);
-          if (p.total == 0) return;  // nothing left to run: no bar
-          bar = std::make_unique<ProgressBar>("study", p.total);
-        }
-        bar->update(p.done, p.last_run);
-      },
-      jobs);
-  if (bar) bar->finish();
-  exploration::write_study_outputs(spec, result);
-  spdlog::info("{} run(s) executed, {} reused; wrote {}/results.csv, {}/summary.md and plots",
-               result.executed, result.reused, spec.out, spec.out);
-  return 0;
+int dispatch(StudyArgs a, const std::vector<std::string>& words) {
+  if (words.size() == 1) {
+    a.file = words[0];
+  } else if (words.size() == 2) {
+    a.verb = words[0];
+    a.file = words[1];
+  } else {
+    throw slam::ParseError("command line", 0, "study", "",
+                           "expected STUDY.yaml or plan|run|merge|slurm STUDY.yaml");
+  }
+  if (a.verb.empty()) return study_local(a);
+  if (a.verb == "plan") return study_plan(a);
+  if (a.verb == "run") return study_run(a);
+  if (a.verb == "merge") return study_merge(a);
+  if (a.verb == "slurm") return study_slurm(a);
+  throw slam::ParseError("command line", 0, "study", a.verb,
+                         "unknown verb: expected plan, run, merge or slurm");
 }
 
 }  // namespace
 
 Run add_study_command(CLI::App& app) {
   auto a = std::make_shared<StudyArgs>();
-  app.add_option("study", a->file, "study YAML (worlds, strategies, seeds; see config/study/)")
-      ->required();
+  auto words = std::make_shared<std::vector<std::string>>();
+  app.add_option("study", *words,
+                 "STUDY.yaml (plan, run every mission here, merge), or one of\n"
+                 "  plan STUDY.yaml   write OUT/plan.csv: every mission and its id\n"
+                 "  run STUDY.yaml    run a shard (--shard I/N, or the Slurm array task's)\n"
+                 "  merge STUDY.yaml  results.csv, summary.md, plots, report.html of what is done\n"
+                 "  slurm STUDY.yaml  write (and with --submit, submit) the sbatch array + merge")
+      ->required()
+      ->expected(1, 2);
   app.add_option("--out", a->out, "output folder (default: the study's out, or out/study/<name>)");
   app.add_option("--jobs", a->jobs, "runs in parallel (default: every core)");
-  return [a] { return run_study_command(*a); };
+  app.add_option("--shard", a->shard,
+                 "run: shard I/N, 0 <= I < N (default: SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT "
+                 "under a Slurm array, else every mission)");
+  app.add_option("--shards", a->shards, "slurm: array tasks (default: one per mission, <= 1000)");
+  app.add_option("--partition", a->partition, "slurm: partition (default: the cluster's)");
+  app.add_option("--time", a->time, "slurm: time limit per array task, e.g. 2:00:00");
+  app.add_option("--cpus-per-task", a->cpus_per_task, "slurm: cores (and workers) per task")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--max-parallel", a->max_parallel, "slurm: array tasks running at once (%K)");
+  app.add_flag("--submit", a->submit, "slurm: submit the array and the merge job, print the ids");
+  return [a, words] { return dispatch(*a, *words); };
 }
 
 }  // namespace lookahead::app

@@ -2,7 +2,9 @@
 #include "lookahead/exploration/study.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -14,6 +16,7 @@
 
 #include "lookahead/exploration/mission.hpp"
 #include "lookahead/exploration/mission_config.hpp"
+#include "lookahead/exploration/study_plan.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::exploration {
@@ -57,6 +60,8 @@ MissionSummary summary_from_json(const std::string& text) {
   s.quality.precision = j.at("map_precision").get<double>();
   s.quality.recall = j.at("map_recall").get<double>();
   s.statistics.collisions = j.at("collisions").get<int>();
+  s.statistics.stuck_goals = j.at("planner").at("stuck_goals").get<int>();
+  s.statistics.backtracks = j.at("backtracks").get<int>();
   s.wall_time = j.at("wall_time_s").get<double>();
   s.real_time_factor = j.at("real_time_factor").get<double>();
   return s;
@@ -89,39 +94,109 @@ std::vector<CoverageSample> read_curve(const fs::path& path) {
 
 // One mission, written to `dir` through `dir`.partial so that the folder only ever holds a
 // complete run.
-StudyRunResult execute_run(const GeneratedWorld& world, const std::string& label,
-                           const MissionOptions& options, const std::string& config_text,
-                           const fs::path& dir) {
+std::string study_run_json(const StudyRunResult& r) {
+  nlohmann::json j;
+  j["mission_id"] = r.mission_id;
+  j["plan_free_area_m2"] = r.plan_free_area_m2;
+  j["predicted_coverage"] = r.predicted_coverage;
+  return j.dump(2) + "\n";
+}
+
+void read_study_run_json(const std::string& text, StudyRunResult& r) {
+  const nlohmann::json j = nlohmann::json::parse(text);
+  r.mission_id = j.at("mission_id").get<std::string>();
+  r.plan_free_area_m2 = j.at("plan_free_area_m2").get<double>();
+  r.predicted_coverage = j.at("predicted_coverage").get<double>();
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  out.close();
+  if (!out) throw slam::ParseError(path.string(), 0, "", "", "cannot write");
+}
+
+// nullopt when `stop` was set while it ran: an interrupted study reports what finished
+// before the interruption, so a run ending after it is not published.
+std::optional<StudyRunResult> execute_run(const GeneratedWorld& world, const std::string& label,
+                                          const MissionOptions& options,
+                                          const std::string& config_text,
+                                          const std::string& mission_id, const fs::path& dir,
+                                          const std::atomic<bool>* stop) {
   Mission mission(world.world, world.start, options);
   const auto start = Clock::now();
   mission.run();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-  StudyRunResult r{summarize(mission, label, wall), mission.coverage_curve(), false};
+  StudyRunResult r;
+  r.finished = true;
+  r.summary = summarize(mission, label, wall);
+  r.curve = mission.coverage_curve();
+  r.mission_id = mission_id;
+  r.plan_free_area_m2 = world.world.free_area_m2();
+  if (r.summary.prediction.enabled)
+    r.predicted_coverage = r.summary.prediction.coverage_with_predictions;
+  // Unique per process: a resubmitted array task may meet a folder its killed predecessor
+  // left half-written.
   fs::path staging = dir;
-  staging += ".partial";
+  staging += fmt::format(".{}.partial", ::getpid());
   fs::remove_all(staging);
   write_mission_outputs(mission, r.summary, staging.string());
   write_curve(staging / "coverage.csv", r.curve);
+  write_text(staging / "study_run.json", study_run_json(r));
   std::ofstream config(staging / "run_config.yaml");
   config << config_text;
   config.close();
   if (!config)
     throw slam::ParseError((staging / "run_config.yaml").string(), 0, "", "", "cannot write");
+  if (stop && stop->load()) {
+    fs::remove_all(staging);
+    return std::nullopt;
+  }
   fs::remove_all(dir);
   fs::rename(staging, dir);
   return r;
 }
 
-std::vector<GeneratedWorld> load_worlds(const StudySpec& spec) {
-  std::vector<GeneratedWorld> worlds;
-  for (const StudyWorld& w : spec.worlds) {
+// The worlds the `needed` runs use; the others stay empty.
+std::vector<std::optional<GeneratedWorld>> load_worlds(const StudySpec& spec,
+                                                       const std::vector<StudyRun>& runs,
+                                                       const std::vector<std::size_t>& needed) {
+  std::vector<std::optional<GeneratedWorld>> worlds(spec.worlds.size());
+  for (const std::size_t i : needed) {
+    const StudyWorld& w = spec.worlds[runs[i].world];
+    if (worlds[runs[i].world]) continue;
     try {
-      worlds.push_back(load_world(w.spec, spec.mission.robot.radius));
+      worlds[runs[i].world] = load_world(w.spec, spec.mission.robot.radius);
     } catch (const std::invalid_argument& e) {
       throw slam::ParseError(spec.source, w.line, "worlds.name", w.spec.name, e.what());
     }
   }
   return worlds;
+}
+
+std::string run_dir(const StudySpec& spec, const PlannedMission& m) {
+  return spec.out + "/runs/" + m.folder;
+}
+
+// Finished runs read back into `result`; returns the indices among `candidates` to run.
+std::vector<std::size_t> read_back(const StudySpec& spec, const std::vector<PlannedMission>& plan,
+                                   const std::vector<std::size_t>& candidates,
+                                   StudyResult& result) {
+  result.runs.resize(plan.size());
+  std::vector<std::size_t> pending;
+  std::vector<bool> candidate(plan.size(), false);
+  for (const std::size_t i : candidates) candidate[i] = true;
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    auto done =
+        read_finished_run(run_dir(spec, plan[i]), run_config_text(spec, plan[i].run, plan[i].id));
+    if (done) {
+      result.runs[i] = std::move(*done);
+      ++result.reused;
+    } else if (candidate[i]) {
+      pending.push_back(i);
+    }
+  }
+  return pending;
 }
 
 }  // namespace
@@ -148,10 +223,19 @@ MissionOptions run_options(const StudySpec& spec, const StudyRun& run) {
   return o;
 }
 
-std::string run_config_text(const StudySpec& spec, const StudyRun& run) {
+std::string run_config_text(const StudySpec& spec, const StudyRun& run,
+                            const std::string& mission_id) {
+  std::string id = mission_id;
+  if (id.empty()) {
+    for (const PlannedMission& m : plan_missions(spec)) {
+      if (m.run.world == run.world && m.run.strategy == run.strategy && m.run.seed == run.seed)
+        id = m.id;
+    }
+  }
   const WorldSpec& w = spec.worlds.at(run.world).spec;
-  std::string text = fmt::format("# world: {}, resolution {}, pixel rule {}, seed {}", w.name,
-                                 w.image_resolution, w.pixel_rule, w.seed);
+  std::string text =
+      fmt::format("# mission id: {}\n# world: {}, resolution {}, pixel rule {}, seed {}", id,
+                  w.name, w.image_resolution, w.pixel_rule, w.seed);
   if (w.start) text += fmt::format(", start [{}, {}, {}]", w.start->x, w.start->y, w.start->theta);
   return text + "\n" + dump_mission_options(run_options(spec, run));
 }
@@ -162,49 +246,77 @@ std::optional<StudyRunResult> read_finished_run(const std::string& dir,
   if (!fs::exists(d / "run.json") || read_text(d / "run_config.yaml") != config_text)
     return std::nullopt;
   try {
-    return StudyRunResult{summary_from_json(read_text(d / "run.json")),
-                          read_curve(d / "coverage.csv"), true};
+    StudyRunResult r;
+    r.finished = true;
+    r.reused = true;
+    r.summary = summary_from_json(read_text(d / "run.json"));
+    r.curve = read_curve(d / "coverage.csv");
+    read_study_run_json(read_text(d / "study_run.json"), r);
+    return r;
   } catch (const std::exception&) {
     return std::nullopt;  // half-written or damaged: run it again
   }
 }
 
+std::size_t StudyResult::finished() const {
+  std::size_t n = 0;
+  for (const StudyRunResult& r : runs) n += r.finished ? 1 : 0;
+  return n;
+}
+
+StudyResult collect_study(const StudySpec& spec) {
+  StudyResult result;
+  read_back(spec, plan_missions(spec), {}, result);
+  return result;
+}
+
 StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress,
                       unsigned workers) {
-  const std::vector<GeneratedWorld> worlds = load_worlds(spec);
-  const std::vector<StudyRun> runs = plan_runs(spec);
-  StudyResult result;
-  result.runs.resize(runs.size());
-  std::vector<std::size_t> pending;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    auto done = read_finished_run(spec.out + "/runs/" + run_id(spec, runs[i]),
-                                  run_config_text(spec, runs[i]));
-    if (done)
-      result.runs[i] = std::move(*done);
-    else
-      pending.push_back(i);
+  StudyRunOptions options;
+  options.workers = workers;
+  return run_study(spec, progress, options);
+}
+
+StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress,
+                      const StudyRunOptions& options) {
+  const std::vector<PlannedMission> plan = plan_missions(spec);
+  std::vector<std::size_t> candidates = options.only.value_or(std::vector<std::size_t>{});
+  if (!options.only) {
+    for (std::size_t i = 0; i < plan.size(); ++i) candidates.push_back(i);
   }
-  result.reused = runs.size() - pending.size();
+  StudyResult result;
+  const std::vector<std::size_t> pending = read_back(spec, plan, candidates, result);
+  std::vector<StudyRun> runs;
+  for (const PlannedMission& m : plan) runs.push_back(m.run);
+  const std::vector<std::optional<GeneratedWorld>> worlds = load_worlds(spec, runs, pending);
   fs::create_directories(spec.out + "/runs");
 
-  StudyProgress state{0, pending.size(), result.reused, 0.0, ""};
+  StudyProgress state{0, pending.size(), result.reused, 0.0, "", {}};
   if (progress) progress(state);
   std::mutex mutex;  // guards state, result and error
   std::exception_ptr error;
   std::atomic<std::size_t> next{0};
   const auto start = Clock::now();
+  const auto stopped = [&] { return options.stop && options.stop->load(); };
   const auto work = [&] {
-    for (std::size_t k = next++; k < pending.size(); k = next++) {
-      const StudyRun& run = runs[pending[k]];
-      try {
-        StudyRunResult r =
-            execute_run(worlds[run.world], spec.worlds[run.world].label, run_options(spec, run),
-                        run_config_text(spec, run), spec.out + "/runs/" + run_id(spec, run));
+    for (std::size_t k = next++; k < pending.size() && !stopped(); k = next++) {
+      const PlannedMission& m = plan[pending[k]];
+      {
         const std::lock_guard<std::mutex> lock(mutex);
-        result.runs[pending[k]] = std::move(r);
+        state.in_flight.push_back(m.folder);
+      }
+      try {
+        std::optional<StudyRunResult> r = execute_run(
+            *worlds[m.run.world], spec.worlds[m.run.world].label, run_options(spec, m.run),
+            run_config_text(spec, m.run, m.id), m.id, run_dir(spec, m), options.stop);
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (!r) break;
+        result.runs[pending[k]] = std::move(*r);
         ++state.done;
+        ++result.executed;
         state.elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-        state.last_run = run_id(spec, run);
+        state.last_run = m.folder;
+        state.in_flight.erase(std::find(state.in_flight.begin(), state.in_flight.end(), m.folder));
         if (progress) progress(state);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(mutex);
@@ -213,12 +325,12 @@ StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progre
       }
     }
   };
-  const unsigned hw = workers ? workers : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned hw =
+      options.workers ? options.workers : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < std::min<std::size_t>(hw, pending.size()); ++t) pool.emplace_back(work);
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);
-  result.executed = pending.size();
   return result;
 }
 

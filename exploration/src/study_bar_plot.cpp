@@ -78,6 +78,8 @@ void draw_group(cv::Mat& img, const BarChart& c, std::size_t g, double top) {
       cv::line(img, {mid - 4, lo}, {mid + 4, lo}, kBlack, 1);
       cv::line(img, {mid - 4, hi}, {mid + 4, hi}, kBlack, 1);
     }
+    if (b.count >= 0)
+      text(img, "n=" + std::to_string(b.count), {left, py(b.value + b.whisker) - 4}, 0.35);
   }
   // Long labels (KTH plan numbers) are cut to what fits under the group.
   const std::size_t fits = static_cast<std::size_t>(std::max(3.0, group_w / 7.5));

@@ -40,7 +40,7 @@ void write_coverage_plot(const std::string& path, const StudySpec& spec, const S
 void write_time_to_95_plot(const std::string& path, const StudySpec& spec,
                            const StudyResult& result) {
   BarChart chart;
-  chart.title = "time to 95 % coverage: mean +- std over the runs that reached it";
+  chart.title = "time to 95 % coverage: mean +- std over the n runs that reached it";
   chart.y_label = "simulated time [s]";
   chart.series = spec.strategies;
   chart.width =
@@ -53,7 +53,8 @@ void write_time_to_95_plot(const std::string& path, const StudySpec& spec,
       for (const StudyRunResult* r : runs_of(spec, result, w, strategy)) {
         if (r->summary.milestones[1].reached) times.push_back(r->summary.milestones[1].time);
       }
-      bars.push_back({!times.empty(), mean(times), sample_std(times)});
+      bars.push_back(
+          {!times.empty(), mean(times), sample_std(times), static_cast<int>(times.size())});
     }
     chart.bars.push_back(bars);
   }

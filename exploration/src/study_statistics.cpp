@@ -61,3 +61,29 @@ WelchResult welch_t_test(const std::vector<double>& a, const std::vector<double>
 }
 
 }  // namespace lookahead::exploration
+
+namespace lookahead::exploration {
+
+WelchResult paired_t_test(const std::vector<double>& a, const std::vector<double>& b) {
+  WelchResult r;
+  if (a.size() != b.size() || a.size() < 2) {
+    r.why = "fewer than 2 pairs";
+    return r;
+  }
+  std::vector<double> d(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) d[i] = a[i] - b[i];
+  r.mean_difference = mean(d);
+  const double s = sample_std(d);
+  if (s == 0.0) {
+    r.why = "the differences do not vary";
+    return r;
+  }
+  const double n = static_cast<double>(d.size());
+  r.t = r.mean_difference / (s / std::sqrt(n));
+  r.df = n - 1;
+  r.p = student_t_two_sided_p(r.t, r.df);
+  r.defined = true;
+  return r;
+}
+
+}  // namespace lookahead::exploration

@@ -13,6 +13,7 @@ struct Bar {
   bool present = false;  ///< false: no value (drawn as "n/a")
   double value = 0.0;    ///< bar height, >= 0
   double whisker = 0.0;  ///< drawn from value - whisker to value + whisker, >= 0
+  int count = -1;        ///< how many runs the bar averages, written above it ("n=3"); < 0: none
 };
 
 struct BarChart {

@@ -35,3 +35,13 @@ struct WelchResult {
 [[nodiscard]] WelchResult welch_t_test(const std::vector<double>& a, const std::vector<double>& b);
 
 }  // namespace lookahead::exploration
+
+namespace lookahead::exploration {
+
+/// The paired t-test of equal means on the differences d_i = a_i - b_i (same world and seed,
+/// two strategies): t = mean(d) / (std(d) / sqrt(n)), n - 1 degrees of freedom (Student,
+/// "The probable error of a mean", Biometrika 6, 1908). Needs a.size() == b.size() >= 2 and
+/// differences that vary; otherwise `defined` is false and `why` says what is missing.
+[[nodiscard]] WelchResult paired_t_test(const std::vector<double>& a, const std::vector<double>& b);
+
+}  // namespace lookahead::exploration
