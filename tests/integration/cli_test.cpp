@@ -67,8 +67,13 @@ TEST_F(Cli, MalformedLogStopsWithFileLineAndField) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("bad.log:2"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("'x'"), std::string::npos) << r.output;
+  // With a readable scan beside the bad line, --skip-bad-lines maps it and names what it skipped.
+  std::ofstream(log) << "ODOM 0 0 0 0 0 0 1 h 1\nFLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 1.5 h 1.5\n"
+                        "FLASER 3 1.0 2.0 x 0 0 0 0 0 0 2 h 2\n";
   const Result skip = shell(bin + " slam " + log.string() + " --skip-bad-lines --out " + (dir / "o").string());
-  EXPECT_NE(skip.output.find("skipped 1 malformed"), std::string::npos) << skip.output;
+  EXPECT_EQ(skip.code, 0) << skip.output;
+  EXPECT_NE(skip.output.find("1 malformed lines skipped"), std::string::npos) << skip.output;
+  EXPECT_NE(skip.output.find("bad.log:3"), std::string::npos) << skip.output;
 }
 
 TEST_F(Cli, MissingFilesAndBadConfigsAreErrorsNotCrashes) {

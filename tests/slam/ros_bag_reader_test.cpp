@@ -3,6 +3,8 @@
 // message states it, odometry interpolated to the scan stamps, the laser mounting from
 // /tf_static, and each bad bag's error naming the topic, frame or time.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <rosbag/bag.h>
 
 #include <cmath>
@@ -51,7 +53,7 @@ geometry_msgs::TransformStamped tf(double t, const std::string& parent, const st
 void write_tf(rosbag::Bag& bag, const std::string& topic, const geometry_msgs::TransformStamped& tr) {
   tf2_msgs::TFMessage m;
   m.transforms.push_back(tr);
-  bag.write(topic, tr.header.stamp, m);
+  bag.write(topic, std::max(tr.header.stamp, ros::TIME_MIN), m);  // a bag holds no record at 0
 }
 
 // odom -> base_link on /tf at 0, 1, ..., n-1 s moving 1 m/s along x; laser 0.2 m ahead.
@@ -116,13 +118,13 @@ TEST(RosBagReader, OdometryTopicWinsAndItsChildFrameNamesTheBase) {
       o.child_frame_id = "base_footprint";
       o.pose.pose.position.y = 2.0 * i;
       o.pose.pose.orientation.w = 1.0;
-      bag.write("/wheel_odom", o.header.stamp, o);
+      bag.write("/wheel_odom", std::max(o.header.stamp, ros::TIME_MIN), o);
     }
     bag.write("/scan", ros::Time(0.5), laser_message(0.5));
   }
   const LaserLog log = read_ros_bag(path.str());
   EXPECT_EQ(log.odometry_source, "/wheel_odom");
-  EXPECT_NEAR(log.scans.at(0).odometry.y, 1.0, 1e-12);
+  EXPECT_NEAR(log.scans.at(0).odometry.y, 1.0, 1e-6);  // the first record sits at ros::TIME_MIN, 1 ns after 0
   EXPECT_NEAR(log.scans.at(0).laser_offset.y, 0.05, 1e-12);
   EXPECT_NEAR(std::abs(log.scans.at(0).laser_offset.theta), M_PI, 1e-9);
 }
@@ -188,7 +190,7 @@ TEST(RosBagReader, OdometryEndingEarlyKeepsTheScansBeforeAndNamesTheTime) {
   {
     rosbag::Bag bag(path.str(), rosbag::bagmode::Write);
     write_robot(bag, 3);  // odometry 0..2 s
-    for (int i = 0; i < 8; ++i) bag.write("/scan", ros::Time(0.5 * i), laser_message(0.5 * i));
+    for (int i = 0; i < 8; ++i) bag.write("/scan", std::max(ros::Time(0.5 * i), ros::TIME_MIN), laser_message(0.5 * i));
   }
   const LaserLog log = read_ros_bag(path.str());
   EXPECT_EQ(log.scans.size(), 7u);  // 0 .. 3 s: the last within max_odometry_gap (1 s) of 2 s

@@ -182,7 +182,8 @@ rosbag::Bag open_bag(const std::string& path) {
     throw ParseError(path, 0, "index", "", "the bag has no index (recording interrupted or file truncated); "
                                            "`rosbag reindex` rebuilds it");
   } catch (const std::exception& e) {
-    throw ParseError(path, 0, "bag", "", std::string("cannot open as a ROS1 bag: ") + e.what());
+    throw ParseError(path, 0, "bag", "", std::string("cannot open as a ROS1 bag (a truncated recording: `rosbag reindex` "
+                                                     "rebuilds it): ") + e.what());
   }
   return bag;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/io/ros_bag_writer.hpp"
 
+#include <algorithm>
+
 #include <rosbag/bag.h>
 
 #include <cmath>
@@ -75,12 +77,12 @@ void RosBagWriter::odometry(double t, const Pose2& pose) {
   const BagWriteOptions& o = impl_->options;
   const ros::Time stamp(t);
   if (!o.odom_topic.empty()) {
-    impl_->bag.write(o.odom_topic, stamp, odometry_message(stamp, o.odom_frame, o.base_frame, pose));
+    impl_->bag.write(o.odom_topic, std::max(stamp, ros::TIME_MIN), odometry_message(stamp, o.odom_frame, o.base_frame, pose));
   }
   if (o.odometry_on_tf) {
     tf2_msgs::TFMessage tf;
     tf.transforms.push_back(transform(stamp, o.odom_frame, o.base_frame, pose));
-    impl_->bag.write("/tf", stamp, tf);
+    impl_->bag.write("/tf", std::max(stamp, ros::TIME_MIN), tf);
   }
 }
 
@@ -90,7 +92,7 @@ void RosBagWriter::scan(const LaserScan& s) {
   if (!impl_->mounting_written) {
     tf2_msgs::TFMessage tf;
     tf.transforms.push_back(transform(stamp, o.base_frame, o.laser_frame, s.laser_offset));
-    impl_->bag.write("/tf_static", stamp, tf);
+    impl_->bag.write("/tf_static", std::max(stamp, ros::TIME_MIN), tf);
     impl_->mounting_written = true;
   }
   sensor_msgs::LaserScan m;
@@ -103,13 +105,13 @@ void RosBagWriter::scan(const LaserScan& s) {
   m.range_min = 0.0f;
   m.range_max = static_cast<float>(s.max_range);
   m.ranges = s.ranges;
-  impl_->bag.write(o.scan_topic, stamp, m);
+  impl_->bag.write(o.scan_topic, std::max(stamp, ros::TIME_MIN), m);
 }
 
 void RosBagWriter::ground_truth(double t, const Pose2& pose) {
   if (impl_->options.ground_truth_topic.empty()) return;
   const ros::Time stamp(t);
-  impl_->bag.write(impl_->options.ground_truth_topic, stamp,
+  impl_->bag.write(impl_->options.ground_truth_topic, std::max(stamp, ros::TIME_MIN),
                    odometry_message(stamp, "map", impl_->options.base_frame, pose));
 }
 
