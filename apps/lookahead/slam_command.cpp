@@ -14,6 +14,7 @@
 #include "lookahead/predictor/slam_lookahead.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
 #include "lookahead/slam/eval/map_entropy.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/map_picture.hpp"
@@ -114,6 +115,9 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   j["log"] = log.path;
   j["scans"] = st.scans;
   j["bad_lines_skipped"] = log.bad_lines;
+  j["stopped_early"] = log.stopped_early;  // empty: the whole log was read
+  j["odometry_jumps"] = log.odometry_jumps.count;
+  j["scans_skipped"] = log.non_finite.count + log.time_reversals.count;
   j["updates"] = st.updates;
   j["resamplings"] = st.resamplings;
   j["scan_match_failures"] = st.match_failures;
@@ -142,6 +146,7 @@ int run_slam(const SlamArgs& a) {
   if (log.bad_lines > 0) {
     spdlog::warn("skipped {} malformed lines; first: {}", log.bad_lines, log.first_bad_line_message);
   }
+  slam::warn_about_events(log);
   if (log.scans.empty()) throw std::runtime_error(a.log + ": no laser scans in the log");
   if (a.max_scans > 0 && log.scans.size() > a.max_scans) log.scans.resize(a.max_scans);
   if (a.method == "hybrid") return run_slam_hybrid(log, {a.out, a.config, a.particles, a.seed});

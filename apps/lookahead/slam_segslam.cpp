@@ -11,6 +11,7 @@
 #include "lookahead/slam/config/segslam_config.hpp"
 #include "lookahead/predictor/pslam_config.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
 #include "lookahead/slam/segslam/min_entropy_search.hpp"
@@ -29,6 +30,7 @@ slam::LaserLog read_log(const SegSlamArgs& a) {
   read.skip_bad_lines = a.skip_bad_lines;
   slam::LaserLog log = slam::read_laser_log(a.log, read);
   if (log.bad_lines > 0) spdlog::warn("skipped {} malformed lines; first: {}", log.bad_lines, log.first_bad_line_message);
+  slam::warn_about_events(log);
   if (log.scans.empty()) throw std::runtime_error(a.log + ": no laser scans in the log");
   if (a.max_scans > 0 && log.scans.size() > a.max_scans) log.scans.resize(a.max_scans);
   return log;

@@ -24,6 +24,7 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include "lookahead/slam/io/laser_log.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::slam {
@@ -154,8 +155,7 @@ void handle_bad(LaserLog& log, const LogReadOptions& options, std::size_t record
   ++log.bad_lines;
 }
 
-/// Reads records until a clean end of file, or until the stream breaks (then nothing after
-/// the broken object can be trusted, so reading stops).
+/// Reads records until a clean end of file, or until the stream breaks.
 void read_records(mrpt::serialization::CArchive& archive, RawlogReader& reader, LaserLog& log,
                   const LogReadOptions& options) {
   for (std::size_t record = 1;; ++record) {
@@ -165,9 +165,12 @@ void read_records(mrpt::serialization::CArchive& archive, RawlogReader& reader, 
     } catch (const mrpt::serialization::CExceptionEOF&) {
       return;  // MRPT's signal for an end of file between two objects
     } catch (const std::exception& e) {
+      // Nothing after a broken object can be trusted: a truncated or corrupt file ends here.
+      // What came before it is mapped; with no scan yet the file is not a rawlog at all.
       const std::string reason = "cannot deserialise: " + mrpt_message(e.what());
       log.lines_read = record;
-      handle_bad(log, options, record, {"record", "", reason});
+      if (log.scans.empty()) handle_bad(log, options, record, {"record", "", reason});
+      log.stopped_early = ParseError(log.path, record, "record", "", reason).what();
       return;
     }
     log.lines_read = record;
@@ -208,6 +211,7 @@ LaserLog read_mrpt_rawlog(const std::string& path, const LogReadOptions& options
   RawlogReader reader(options, log);
   // A broken stream ends the read; with skip_bad_lines what came before it is kept.
   read_records(archive, reader, log, options);
+  check_odometry(log, options);
   return log;
 }
 

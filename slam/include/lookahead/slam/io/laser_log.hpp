@@ -16,6 +16,16 @@ struct LogReadOptions {
   /// Readings at or above this are no-returns even where the log claims a larger max range
   /// (CARMEN logs write 81.83/81.91 for "no echo") [m].
   double no_return_range = 80.0;
+  /// Odometry steps between consecutive scans longer than this are jumps: the motion model
+  /// is reset there (odometry_check.hpp) [m], (0, 1000]. A robot does not cover 10 m
+  /// between two scans; a reset or wrapped-around odometer does.
+  double max_odometry_step = 10.0;
+};
+
+/// Scans a reader dropped or changed, with the first as "file:line: what" for the log.
+struct LogEvent {
+  std::size_t count = 0;
+  std::string first;
 };
 
 struct LaserLog {
@@ -24,6 +34,11 @@ struct LaserLog {
   std::size_t lines_read = 0;
   std::size_t bad_lines = 0;            ///< skipped with --skip-bad-lines
   std::string first_bad_line_message;   ///< what was wrong with the first skipped line
+  /// Reading stopped here (a truncated or broken file); the scans before it are kept.
+  std::string stopped_early;
+  LogEvent non_finite;      ///< scans with a non-finite odometry pose or time, skipped
+  LogEvent time_reversals;  ///< scans stamped before the previous one, skipped
+  LogEvent odometry_jumps;  ///< steps over max_odometry_step, where the motion model was reset
 };
 
 /// Reads a CARMEN log (.log/.clf, or the same gzip-compressed with .gz).
