@@ -26,6 +26,7 @@
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "rawlog_guard.hpp"
 
 namespace lookahead::slam {
 namespace {
@@ -188,7 +189,7 @@ void read_records(mrpt::serialization::CArchive& archive, RawlogReader& reader, 
 
 }  // namespace
 
-LaserLog read_mrpt_rawlog(const std::string& path, const LogReadOptions& options) {
+LaserLog detail::read_mrpt_rawlog_unguarded(const std::string& path, const LogReadOptions& options) {
   LaserLog log;
   log.path = path;
   std::error_code ec;
