@@ -13,6 +13,7 @@ packages=(
   libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   slurm-wlm munge chromium fonts-dejavu-core
+  clang libclang-rt-14-dev
 )
 
 missing=()

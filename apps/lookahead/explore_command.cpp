@@ -111,7 +111,7 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--config", a->config, "mission options YAML (see config/mission/default.yaml)");
   app.add_option("--robot", a->robot, "robot YAML: body, laser, odometry (config/robot/pioneer3dx.yaml, p2explore.yaml)");
   app.add_option("--world", a->world.name, "office | maze | corridor | map .yaml | Stage .world | image")->capture_default_str();
-  app.add_option("--resolution", a->world.image_resolution, "m/pixel of a plain image world")->capture_default_str();
+  app.add_option("--resolution", a->world.image_resolution, "m/pixel of a plain image world (required for one)");
   app.add_option("--pixel-rule", a->world.pixel_rule, "stage | only_white (plain images)")->capture_default_str();
   app.add_option("--laser-range", a->laser_range, "sensor range [m] (default 8, a SICK LMS-200 in Stage)");
   app.add_option("--laser-fov", a->laser_fov_deg, "sensor field of view [deg] (default 180)");

@@ -15,6 +15,7 @@
 #include "lookahead/predictor/slam_lookahead.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
 #include "lookahead/slam/eval/map_entropy.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/map_picture.hpp"
@@ -119,6 +120,9 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   j["log"] = log.path;
   j["scans"] = st.scans;
   j["bad_lines_skipped"] = log.bad_lines;
+  j["stopped_early"] = log.stopped_early;  // empty: the whole log was read
+  j["odometry_jumps"] = log.odometry_jumps.count;
+  j["scans_skipped"] = log.non_finite.count + log.time_reversals.count;
   j["updates"] = st.updates;
   j["resamplings"] = st.resamplings;
   j["scan_match_failures"] = st.match_failures;

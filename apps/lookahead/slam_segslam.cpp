@@ -11,6 +11,7 @@
 #include "lookahead/slam/config/segslam_config.hpp"
 #include "lookahead/predictor/pslam_config.hpp"
 #include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
 #include "lookahead/slam/segslam/min_entropy_search.hpp"

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "lookahead/slam/limits/input_limits.hpp"
+
 namespace lookahead::exploration {
 namespace {
 
@@ -40,7 +42,10 @@ void LaserOptions::validate() const {
   require(fov > 0 && fov <= 2 * M_PI + 1e-9, "fov", fov, "must be in (0, 2 pi]");
   require(angular_resolution > 0 && angular_resolution <= fov, "angular_resolution",
           angular_resolution, "must be in (0, fov]");
-  require(max_range > 0, "max_range", max_range, "must be > 0");
+  require(max_range > 0 && max_range <= slam::limits::kMaxLaserRange, "max_range", max_range,
+          "must be in (0, 1000] m (limits::kMaxLaserRange)");
+  require(fov / angular_resolution <= static_cast<double>(slam::limits::kMaxBeams), "angular_resolution",
+          angular_resolution, "gives over 100000 beams per scan (limits::kMaxBeams)");
   require(range_sigma >= 0, "range_sigma", range_sigma, "must be >= 0");
   require(rate_hz > 0, "rate_hz", rate_hz, "must be > 0");
 }

@@ -10,6 +10,7 @@
 #include "lookahead/exploration/run_log.hpp"
 #include "lookahead/exploration/prediction_targets.hpp"
 #include "lookahead/exploration/target_selection.hpp"
+#include "lookahead/exploration/world_source.hpp"
 #include "lookahead/slam/grid/scan_inserter.hpp"
 
 namespace lookahead::exploration {
@@ -67,7 +68,11 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       // A spot is the same target within 1 m (the goal shifts as the map grows, as kSameGoalRadius);
       // strikes never make an entry permanent: the map keeps growing around it.
       predicted_targets_({kSameGoalRadius, options.lookahead.repredict_after, std::numeric_limits<int>::max()}) {
-  if (!reachable_.start_valid) throw std::invalid_argument("mission: the start pose is in collision");
+  if (!reachable_.start_valid) check_start(world, world.source(), start, options.robot.radius);
+  if (!reachable_.start_valid) {
+    throw std::invalid_argument("world " + world.source() + ": the start pose (" + std::to_string(start.x) + ", " +
+                                std::to_string(start.y) + ") has no free space around it");
+  }
   if (options_.lookahead.enabled) {
     lookahead_ = std::make_unique<LookaheadMapping>(options_.lookahead, world_, options_.slam.grid,
                                                     observable_cells(world_, reachable_));

@@ -82,7 +82,7 @@ template <typename V>
 void visit_planning_sections(MissionOptions& o, V&& v) {
   v.section("planner");
   v("algorithm", o.planner.algorithm, "rrt_star | prm_star | informed_rrt_star");
-  v("time_budget", o.planner.time_budget, "wall-clock budget of one search [s], (0, 60]");
+  v("time_budget", o.planner.time_budget, "wall-clock budget of a search without a sample budget [s], (0, 60]");
   v("max_samples", o.planner.max_samples, "samples per search, 0 = no limit");
   v("samples_per_m2", o.planner.samples_per_m2,
     "samples per m^2 of the ellipse the Dijkstra price bounds (>= 300, <= max_samples); 0 = off");

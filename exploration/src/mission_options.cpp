@@ -40,7 +40,7 @@ MissionOptions MissionOptions::defaults() {
   o.slam.insert.clear_no_returns = true;
   o.slam.insert.exact_rays = true;  // long grazing beams would erase corridor walls
   // Planning ends by a sample count, not the clock: fast, and the same on any machine.
-  o.planner.time_budget = 10.0;  // a guard only: the sample count ends every search
+  o.planner.time_budget = 10.0;  // used by searches without a sample budget only
   o.planner.max_samples = 3000;
   // Searches bounded by the Dijkstra price sample their ellipse this densely: a short hop
   // takes a few hundred samples, a long detour up to max_samples.

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "lookahead/exploration/world_source.hpp"
+
 namespace lookahead::exploration {
 namespace {
 
@@ -56,10 +58,7 @@ slam::Pose2 integrate_arc(const slam::Pose2& p, double v, double omega, double d
 Robot::Robot(const World& world, const slam::Pose2& start, const RobotOptions& options)
     : world_(&world), o_(options), pose_(start) {
   o_.validate();
-  if (disc_collides(world, {start.x, start.y}, o_.radius)) {
-    throw std::invalid_argument("Robot: start pose (" + std::to_string(start.x) + ", " +
-                                std::to_string(start.y) + ") is in collision");
-  }
+  check_start(world, world.source(), start, o_.radius);
 }
 
 StepResult Robot::step(double v, double omega, double dt) {

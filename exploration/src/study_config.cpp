@@ -13,6 +13,7 @@
 
 #include "lookahead/exploration/mission_config.hpp"
 #include "lookahead/exploration/study_keys.hpp"
+#include "lookahead/slam/limits/input_limits.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::exploration {
@@ -44,6 +45,11 @@ class StudyParser {
     s.worlds = worlds(required(root, "worlds", root));
     s.strategies = strategies(required(root, "strategies", root));
     s.seeds = seeds(required(root, "seeds", root));
+    if (s.worlds.size() * s.strategies.size() * s.seeds.size() > slam::limits::kMaxStudyRuns) {
+      fail(root["seeds"], "seeds",
+           std::to_string(s.worlds.size() * s.strategies.size() * s.seeds.size()) +
+               " runs (worlds x strategies x seeds), over the limit of 100000 (limits::kMaxStudyRuns)");
+    }
     s.mission = mission(root);
     for (const std::string& strategy : s.strategies) {
       MissionOptions o = s.mission;
@@ -101,6 +107,13 @@ class StudyParser {
     return out;
   }
 
+  // A plain image, which (unlike a map_server .yaml or a Stage .world) carries no scale.
+  static bool is_image(const std::string& name) {
+    const std::string ext = fs::path(name).extension().string();
+    return ext != ".yaml" && ext != ".yml" && ext != ".world" && name != "office" && name != "maze" &&
+           name != "corridor";
+  }
+
   StudyWorld world(const YAML::Node& w) const {
     check_keys(w, "worlds.", key_names(study_world_keys()));
     StudyWorld sw;
@@ -115,9 +128,12 @@ class StudyParser {
     if (!is_label(sw.label))
       fail(w["label"] ? w["label"] : w, "worlds.label",
            "use letters, digits, '.', '_' and '-' only");
-    if (w["resolution"])
+    if (w["resolution"]) {
       sw.spec.image_resolution = get<double>(w["resolution"], "worlds.resolution");
-    if (!(sw.spec.image_resolution > 0)) fail(w["resolution"], "worlds.resolution", "must be > 0");
+      if (!(sw.spec.image_resolution > 0)) fail(w["resolution"], "worlds.resolution", "must be > 0");
+    } else if (is_image(name)) {
+      fail(w, "worlds.resolution", "missing: an image world (" + name + ") needs its m/pixel stated");
+    }
     if (const YAML::Node r = w["pixel_rule"]) {
       sw.spec.pixel_rule = get<std::string>(r, "worlds.pixel_rule");
       if (sw.spec.pixel_rule != "stage" && sw.spec.pixel_rule != "only_white") {
@@ -151,8 +167,14 @@ class StudyParser {
       const auto from = get<std::uint64_t>(required(n, "from", n), "seeds.from");
       const auto count = get<int>(required(n, "count", n), "seeds.count");
       if (count < 1) fail(n["count"], "seeds.count", "must be >= 1");
+      if (static_cast<std::size_t>(count) > slam::limits::kMaxStudyRuns) {
+        fail(n["count"], "seeds.count", "over the limit of 100000 runs per study (limits::kMaxStudyRuns)");
+      }
       for (int i = 0; i < count; ++i) out.push_back(from + static_cast<std::uint64_t>(i));
     } else if (n.IsSequence() && n.size() > 0) {
+      if (n.size() > slam::limits::kMaxStudyRuns) {
+        fail(n, "seeds", "over the limit of 100000 runs per study (limits::kMaxStudyRuns)");
+      }
       for (const YAML::Node& s : n) {
         out.push_back(get<std::uint64_t>(s, "seeds"));
         if (std::count(out.begin(), out.end(), out.back()) > 1) fail(s, "seeds", "listed twice");

@@ -4,6 +4,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
+#include "lookahead/slam/io/image_header.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::exploration {
@@ -38,10 +39,17 @@ cv::Mat read_free_mask(const std::string& path, const PixelRule& rule,
                        const std::string& context_file, std::size_t context_line,
                        const std::string& key) {
   rule.validate();
-  cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
+  slam::check_image_header(path, context_file, context_line, key);
+  cv::Mat image;
+  try {
+    image = cv::imread(path, cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception& e) {  // a header OpenCV's decoder refuses
+    throw slam::ParseError(context_file, context_line, key, path, "cannot read image: " + e.msg);
+  }
   if (image.empty()) {
     throw slam::ParseError(context_file, context_line, key, path, "cannot read image");
   }
+  slam::check_image_size(image.cols, image.rows, context_file, context_line, key);
   if (image.depth() == CV_16U) image.convertTo(image, CV_8U, 1.0 / 257.0);
   if (image.depth() != CV_8U) {
     throw slam::ParseError(context_file, context_line, key, path, "unsupported pixel depth");

@@ -20,6 +20,11 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 World load_file(const WorldSpec& spec) {
   if (ends_with(spec.name, ".yaml") || ends_with(spec.name, ".yml")) return load_map_yaml(spec.name);
   if (ends_with(spec.name, ".world")) return load_stage_world(spec.name);
+  // An image carries no scale: a guessed one would shrink or stretch every room.
+  if (!(spec.image_resolution > 0)) {
+    throw std::invalid_argument(spec.name + ": resolution (m/pixel) of an image world must be stated (--resolution, "
+                                "or resolution: in a study), got " + std::to_string(spec.image_resolution));
+  }
   ImageWorldOptions o;
   o.resolution = spec.image_resolution;
   if (spec.pixel_rule == "only_white") o.rule = PixelRule::only_white();
@@ -30,6 +35,25 @@ World load_file(const WorldSpec& spec) {
 }
 
 }  // namespace
+
+void check_start(const World& world, const std::string& name, const slam::Pose2& start, double robot_radius) {
+  const std::string pose = "(" + std::to_string(start.x) + ", " + std::to_string(start.y) + ", " +
+                           std::to_string(start.theta) + ")";
+  const Eigen::Vector2d lo = world.origin();
+  const Eigen::Vector2d hi = lo + Eigen::Vector2d(world.width_m(), world.height_m());
+  if (!(std::isfinite(start.x) && std::isfinite(start.y) && std::isfinite(start.theta))) {
+    throw std::invalid_argument("world " + name + ": the start pose " + pose + " is not finite");
+  }
+  if (start.x < lo.x() || start.y < lo.y() || start.x >= hi.x() || start.y >= hi.y()) {
+    throw std::invalid_argument("world " + name + ": the start pose " + pose + " is outside the map, which spans (" +
+                                std::to_string(lo.x()) + ", " + std::to_string(lo.y()) + ") to (" +
+                                std::to_string(hi.x()) + ", " + std::to_string(hi.y()) + ")");
+  }
+  if (disc_collides(world, {start.x, start.y}, robot_radius)) {
+    throw std::invalid_argument("world " + name + ": the start pose " + pose + " is in collision (a wall within the " +
+                                std::to_string(robot_radius) + " m robot radius)");
+  }
+}
 
 slam::Pose2 default_start(const World& world, double clearance) {
   // The middle of the free space, not of the raster: Stage line drawings leave free space
@@ -85,10 +109,7 @@ GeneratedWorld load_world(const WorldSpec& spec, double robot_radius) {
     g.start = default_start(g.world, std::max(0.6, 2 * robot_radius));
   }
   if (spec.start) g.start = *spec.start;
-  if (disc_collides(g.world, {g.start.x, g.start.y}, robot_radius)) {
-    throw std::invalid_argument(spec.name + ": the start (" + std::to_string(g.start.x) + ", " +
-                                std::to_string(g.start.y) + ") is in collision");
-  }
+  check_start(g.world, spec.name, g.start, robot_radius);
   return g;
 }
 

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "lookahead/exploration/world_loader.hpp"
+#include "lookahead/slam/limits/input_limits.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 #include "world_image.hpp"
 #include "world_stage_syntax.hpp"
@@ -136,6 +137,11 @@ World load_stage_world(const std::string& path, const StageWorldOptions& options
   if (!(sx > 0 && sy > 0)) throw ParseError(path, m.line, "size", "", "floorplan needs a positive size");
   const double rx = sx / mask.cols, ry = sy / mask.rows;
   const double res = options.resolution > 0 ? options.resolution : std::min(rx, ry);
+  // Checked in floating point before any integer conversion or allocation.
+  if (!(sx / res * (sy / res) <= static_cast<double>(slam::limits::kMaxImagePixels))) {
+    throw ParseError(path, m.line, "size", std::to_string(sx) + " x " + std::to_string(sy),
+                     "at " + std::to_string(res) + " m/pixel over 8192 x 8192 pixels (limits::kMaxImagePixels)");
+  }
   const int w = std::max(1, static_cast<int>(std::lround(sx / res)));
   const int h = std::max(1, static_cast<int>(std::lround(sy / res)));
   // Nearest neighbour at the finer pixel size only repeats pixels, so no wall goes missing.

@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "lookahead/slam/io/parse_error.hpp"
+#include "lookahead/slam/limits/input_limits.hpp"
 
 namespace lookahead::exploration::detail {
 namespace {
@@ -83,9 +84,16 @@ class Parser {
     return pos_ < t_.size() && !t_[pos_].quoted && t_[pos_].text == text;
   }
 
+  // Each nested block is a recursion: a bound keeps a deeply nested file from
+  // overflowing the stack.
   void body(StageModel& m, StageFile& out) {
+    if (++depth_ > slam::limits::kMaxWorldNesting) {
+      throw ParseError(file_, m.line, "nesting depth", std::to_string(depth_),
+                       "blocks nest deeper than 64 (limits::kMaxWorldNesting)");
+    }
     while (!peek(")")) entry(m, out, false);
     ++pos_;
+    --depth_;
   }
 
   void entry(StageModel& parent, StageFile& out, bool top) {
@@ -137,6 +145,7 @@ class Parser {
   std::vector<Token> t_;
   const std::string& file_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace

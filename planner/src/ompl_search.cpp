@@ -102,6 +102,17 @@ std::int64_t bounded_samples(const PlannerOptions& options, double area) {
   return options.max_samples > 0 ? std::min(n, options.max_samples) : n;
 }
 
+/// A sample budget alone ends a sample-limited search: a clock would cut it at a point that
+/// depends on the machine's load, and the same seed would give different paths. Only a
+/// search without one (max_samples = 0) is ended by time_budget.
+ob::PlannerTerminationCondition termination(const PlannerOptions& options,
+                                            const std::shared_ptr<SamplingContext>& context,
+                                            std::int64_t max_samples) {
+  if (max_samples <= 0) return ob::timedPlannerTerminationCondition(options.time_budget);
+  return ob::PlannerTerminationCondition(
+      [context, max_samples] { return context->samples() >= max_samples; });
+}
+
 }  // namespace
 
 SearchOutcome search_with_ompl(const Costmap& costmap, Point2 start, Point2 goal,
@@ -129,11 +140,7 @@ SearchOutcome search_with_ompl(const Costmap& costmap, Point2 start, Point2 goal
   const ob::PlannerPtr planner = make_planner(si, options, *context);
   planner->setProblemDefinition(problem);
   planner->setup();
-  const ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(
-      ob::timedPlannerTerminationCondition(options.time_budget),
-      ob::PlannerTerminationCondition(
-          [context, max_samples] { return max_samples > 0 && context->samples() >= max_samples; }));
-  const ob::PlannerStatus status = planner->solve(ptc);
+  const ob::PlannerStatus status = planner->solve(termination(options, context, max_samples));
 
   SearchOutcome outcome;
   outcome.states = count_states(planner, si);

@@ -72,19 +72,22 @@ Prediction PredictionWorker::run(const Request& r) {
   return p;
 }
 
-std::optional<Prediction> PredictionWorker::poll() {
-  std::lock_guard<std::mutex> lock(mutex_);
+std::optional<Prediction> PredictionWorker::take_result() {
+  if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
   std::optional<Prediction> out = std::move(result_);
   result_.reset();
   return out;
 }
 
+std::optional<Prediction> PredictionWorker::poll() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return take_result();
+}
+
 std::optional<Prediction> PredictionWorker::wait() {
   std::unique_lock<std::mutex> lock(mutex_);
   done_.wait(lock, [this] { return !queued_ && !running_; });
-  std::optional<Prediction> out = std::move(result_);
-  result_.reset();
-  return out;
+  return take_result();
 }
 
 bool PredictionWorker::busy() const {
@@ -102,9 +105,16 @@ void PredictionWorker::loop() {
     queued_.reset();
     running_ = true;
     lock.unlock();
-    Prediction p = run(r);
+    std::optional<Prediction> p;
+    std::exception_ptr error;
+    try {
+      p = run(r);
+    } catch (...) {
+      error = std::current_exception();  // would call std::terminate on this thread
+    }
     lock.lock();
     result_ = std::move(p);
+    if (error && !error_) error_ = error;
     running_ = false;
     if (!queued_) done_.notify_all();
   }

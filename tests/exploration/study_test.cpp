@@ -136,7 +136,8 @@ TEST(StudyConfig, MalformedFilesNameTheLine) {
   EXPECT_EQ(e.field(), "worlds.resoluton");
   EXPECT_EQ(study_error(kHead + "seeds: [1]\npose_source: gps\n").line(), 6u);
   e = study_error(
-      "name: s\nworlds:\n  - {name: a.png}\n  - name: b.png\n    pixel_rule: grey\nstrategies: "
+      "name: s\nworlds:\n  - {name: a.png, resolution: 0.05}\n  - name: b.png\n    pixel_rule: grey\n"
+      "    resolution: 0.1\nstrategies: "
       "[nearest]\nseeds: [1]\n");
   EXPECT_EQ(e.line(), 5u);
   EXPECT_EQ(e.value(), "grey");

@@ -104,7 +104,7 @@ TEST(CarmenReader, ReadsGzipDirectly) {
 TEST(CarmenReader, MalformedLineNamesFileLineAndField) {
   const std::string bad = "FLASER 3 1.0 oops 1.0 0 0 0 0 0 0 3.0 h 3.0\n";
   test::TempPath f(".log");
-  f.write(flaser(180, 1.0) + bad);
+  f.write(flaser(180, 1.0) + bad + flaser(180, 4.0));  // a bad line with more after it
   try {
     read_carmen_log(f.str());
     FAIL() << "no error";
@@ -124,6 +124,26 @@ TEST(CarmenReader, SkipBadLinesCountsThemAndKeepsTheRest) {
   EXPECT_EQ(log.scans.size(), 2u);
   EXPECT_EQ(log.bad_lines, 2u);
   EXPECT_NE(log.first_bad_line_message.find(":2:"), std::string::npos);
+}
+
+TEST(CarmenReader, TruncatedLastLineKeepsTheScansAndSaysWhere) {
+  const std::string full = flaser(180, 1.0) + flaser(180, 2.0) + flaser(180, 3.0);
+  const LaserLog log = read_text(full.substr(0, full.size() - 40));  // cut inside line 3
+  EXPECT_EQ(log.scans.size(), 2u);
+  EXPECT_NE(log.stopped_early.find(":3:"), std::string::npos) << log.stopped_early;
+  EXPECT_EQ(read_text(full).stopped_early, "");
+}
+
+TEST(CarmenReader, OdometryJumpResetsTheMotionModel) {
+  // The third scan's odometry reads 100 km further and the fourth's jumps back: a reset
+  // odometer twice, not motion.
+  const std::string jump = "FLASER 3 1 1 1 100000.0 2.0 0.0 100000.1 2.0 0.0 3.0 h -97\n";
+  const LaserLog log = read_text(flaser(3, 1.0) + flaser(3, 2.0) + jump + flaser(3, 4.0));
+  ASSERT_EQ(log.scans.size(), 4u);
+  EXPECT_EQ(log.odometry_jumps.count, 2u);
+  EXPECT_NE(log.odometry_jumps.first.find(":3:"), std::string::npos) << log.odometry_jumps.first;
+  EXPECT_NEAR(log.scans[2].odometry.x, log.scans[1].odometry.x, 1e-9);  // the jump counts as no motion
+  EXPECT_NEAR(log.scans[3].odometry.x, log.scans[2].odometry.x, 1e-9);  // and so does the jump back
 }
 
 TEST(CarmenReader, MissingFileIsAParseError) {

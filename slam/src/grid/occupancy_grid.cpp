@@ -7,11 +7,24 @@
 #include <stdexcept>
 #include <unordered_set>
 
+#include <fmt/format.h>
+
+#include "lookahead/slam/limits/input_limits.hpp"
+
 namespace lookahead::slam {
 namespace {
 
 int to_fixed(double log_odds) {
   return static_cast<int>(std::lround(log_odds * GridTile::kLogOddsScale));
+}
+
+/// A cell coordinate, clamped to +-2^30 so that a point far off any map (or not finite)
+/// becomes a cell the extent check refuses instead of an integer overflow.
+int to_cell(double cells) {
+  constexpr double kFar = 1 << 30;
+  if (!(cells > -kFar)) return -(1 << 30);
+  if (!(cells < kFar)) return 1 << 30;
+  return static_cast<int>(std::floor(cells));
 }
 
 }  // namespace
@@ -53,8 +66,7 @@ double OccupancyGrid::probability(CellIndex c) const {
 }
 
 CellIndex OccupancyGrid::cell_at(double x, double y) const {
-  return {static_cast<int>(std::floor(x / options_.resolution)),
-          static_cast<int>(std::floor(y / options_.resolution))};
+  return {to_cell(x / options_.resolution), to_cell(y / options_.resolution)};
 }
 
 void OccupancyGrid::cell_center(CellIndex c, double& x, double& y) const {
@@ -81,6 +93,16 @@ bool OccupancyGrid::known_bounds(CellIndex& min, CellIndex& max) const {
   return any;
 }
 
+void OccupancyGrid::check_extent(std::int64_t tiles_w, std::int64_t tiles_h) const {
+  if (tiles_w * tiles_h <= limits::kMaxGridTiles) return;
+  const double tile_m = GridTile::kSide * options_.resolution;
+  throw limits::ResourceLimitError(fmt::format(
+      "the map would span {:.0f} m x {:.0f} m ({} x {} tiles of {} m), over the limit of {} tiles "
+      "per grid (limits::kMaxGridTiles); a pose far off the map (odometry jump, huge motion noise?)",
+      static_cast<double>(tiles_w) * tile_m, static_cast<double>(tiles_h) * tile_m, tiles_w, tiles_h,
+      tile_m, limits::kMaxGridTiles));
+}
+
 void OccupancyGrid::grow_to_include(int tx, int ty) {
   if (tiles_w_ > 0 && tx >= tile_x0_ && ty >= tile_y0_ && tx < tile_x0_ + tiles_w_ &&
       ty < tile_y0_ + tiles_h_) {
@@ -94,6 +116,7 @@ void OccupancyGrid::grow_to_include(int tx, int ty) {
                           : tx + 1 + kMargin;
   const int y1 = tiles_h_ ? std::max(tile_y0_ + tiles_h_, ty + 1 + (ty >= tile_y0_ + tiles_h_ ? kMargin : 0))
                           : ty + 1 + kMargin;
+  check_extent(std::int64_t{x1} - x0, std::int64_t{y1} - y0);
   std::vector<std::shared_ptr<GridTile>> grown(static_cast<std::size_t>((x1 - x0) * (y1 - y0)));
   for (int iy = 0; iy < tiles_h_; ++iy) {
     for (int ix = 0; ix < tiles_w_; ++ix) {

@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+#include "lookahead/slam/parallel/parallel_errors.hpp"
+
 namespace lookahead::slam::hybrid {
 namespace {
 
@@ -36,27 +38,31 @@ StudyResult run_study(const StudyOptions& study, const HybridOptions& filter, co
   const FailureRule rule{study.failure_sigma, study.failure_iterations};
   int done = 0;
   const int threads = study.threads > 0 ? study.threads : omp_get_num_procs();
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int job = 0; job < jobs; ++job) {
-    const std::size_t level = static_cast<std::size_t>(job / study.trials);
-    const int trial = job % study.trials;
-    const TrialSeeds s = trial_seeds(study.seed, level, trial, study.worlds);
-    HybridOptions o = filter;
-    o.existence.alpha = study.alphas[level];
-    o.existence.beta = study.betas[level];
-    const SimulatedRun run = simulate(sim, o.sensor, o.existence.alpha, o.existence.beta, s.world, s.noise);
-    auto& mine = outcome[static_cast<std::size_t>(job)];
-    for (FilterKind kind : filters) {
-      TrialResult r = run_trial(kind, run, o, s.filter, rule, true);
-      r.trace.clear(), r.nees.clear(), r.estimate.clear(), r.map.clear();  // the table needs none
-      mine.push_back(std::move(r));
-    }
+    errors.run([&] {
+      const std::size_t level = static_cast<std::size_t>(job / study.trials);
+      const int trial = job % study.trials;
+      const TrialSeeds s = trial_seeds(study.seed, level, trial, study.worlds);
+      HybridOptions o = filter;
+      o.existence.alpha = study.alphas[level];
+      o.existence.beta = study.betas[level];
+      const SimulatedRun run = simulate(sim, o.sensor, o.existence.alpha, o.existence.beta, s.world, s.noise);
+      auto& mine = outcome[static_cast<std::size_t>(job)];
+      for (FilterKind kind : filters) {
+        TrialResult r = run_trial(kind, run, o, s.filter, rule, true);
+        r.trace.clear(), r.nees.clear(), r.estimate.clear(), r.map.clear();  // the table needs none
+        mine.push_back(std::move(r));
+      }
 #pragma omp critical(hybrid_study_progress)
-    {
-      ++done;
-      if (progress) progress(done, jobs);
-    }
+      {
+        ++done;
+        if (progress) progress(done, jobs);
+      }
+    });
   }
+  errors.rethrow();
   StudyResult result;
   result.filters = filters;
   for (std::size_t f = 0; f < filters.size(); ++f) {

@@ -15,16 +15,19 @@
 #include <functional>
 #include <map>
 #include <unordered_set>
+#include <optional>
 
 #include "carmen_fields.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/line_reader.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
+#include "lookahead/slam/limits/input_limits.hpp"
 
 namespace lookahead::slam {
 namespace {
 
 using carmen::Fields;
-constexpr std::size_t kMaxBeams = 100000;
+using limits::kMaxBeams;
 
 struct OdomSample {
   double t;
@@ -221,29 +224,52 @@ void fill_summary(const ReaderState& s, std::size_t chosen, LaserLog& log) {
   }
 }
 
+/// Reads every line into `state`. A bad last line, or a compressed stream that breaks, is
+/// where a truncated file ends: reading stops there and the scans before it are kept
+/// (log.stopped_early says where). A bad line with more lines after it is an error, unless
+/// skip_bad_lines.
+void read_lines(const std::string& path, const LogReadOptions& options, ReaderState& state, LaserLog& log) {
+  LineReader reader(path);
+  std::string line;
+  std::optional<ParseError> pending;  // a bad line, fatal unless it is the last one
+  try {
+    while (reader.next(line)) {
+      const std::size_t first = line.find_first_not_of(" \t");
+      if (first == std::string::npos || line[first] == '#') continue;
+      if (pending) throw *pending;
+      Fields fields(path, reader.line_number(), line);
+      try {
+        parse_line(fields, state, options);
+        for (auto& st : state.streams) {
+          if (!st.empty() && st.back().source_line == 0) st.back().source_line = reader.line_number();
+        }
+      } catch (const ParseError& e) {
+        if (!options.skip_bad_lines) {
+          pending = e;
+          continue;
+        }
+        if (log.bad_lines++ == 0) log.first_bad_line_message = e.what();
+      }
+    }
+  } catch (const ParseError& e) {
+    if (pending || reader.line_number() == 0) throw;
+    pending = e;  // a read error of the compressed stream: the file ends here
+  }
+  log.lines_read = reader.line_number();
+  if (!pending) return;
+  // A bad last line before any scan leaves nothing to keep: it is the error itself.
+  const bool any_scan = std::any_of(state.streams.begin(), state.streams.end(), [](const auto& st) { return !st.empty(); });
+  if (!any_scan) throw *pending;
+  log.stopped_early = pending->what();
+}
+
 }  // namespace
 
 LaserLog read_carmen_log(const std::string& path, const LogReadOptions& options) {
   LaserLog log;
   log.path = path;
   ReaderState state;
-  LineReader reader(path);
-  std::string line;
-  while (reader.next(line)) {
-    const std::size_t first = line.find_first_not_of(" \t");
-    if (first == std::string::npos || line[first] == '#') continue;
-    Fields fields(path, reader.line_number(), line);
-    try {
-      parse_line(fields, state, options);
-      for (auto& st : state.streams) {
-        if (!st.empty() && st.back().source_line == 0) st.back().source_line = reader.line_number();
-      }
-    } catch (const ParseError& e) {
-      if (!options.skip_bad_lines) throw;
-      if (log.bad_lines++ == 0) log.first_bad_line_message = e.what();
-    }
-  }
-  log.lines_read = reader.line_number();
+  read_lines(path, options, state, log);
   std::stable_sort(state.odometry.begin(), state.odometry.end(),
                    [](const OdomSample& a, const OdomSample& b) { return a.t < b.t; });
   for (const std::size_t i : state.raw_needs_odometry) {
@@ -255,6 +281,7 @@ LaserLog read_carmen_log(const std::string& path, const LogReadOptions& options)
     log.scans = std::move(state.streams[k]);
     break;
   }
+  check_odometry(log, options);
   return log;
 }
 

@@ -45,6 +45,22 @@ void check_timing(LogCheck& c, const LaserLog& log, const LogCheckOptions& o) {
   }
 }
 
+// What the reader already repaired (odometry_check.hpp): the scans it dropped or re-anchored
+// (time going backwards it keeps, and check_timing counts).
+void report_repairs(LogCheck& c, const LaserLog& log) {
+  if (log.non_finite.count > 0) {
+    add(c, Severity::kWarning, "non_finite",
+        fmt::format("{} scans with a non-finite pose or time were skipped; first: {}", log.non_finite.count,
+                    log.non_finite.first));
+  }
+  if (log.odometry_jumps.count > 0) {
+    c.odometry_jumps += log.odometry_jumps.count;
+    add(c, Severity::kWarning, "odometry_jumps",
+        fmt::format("{} odometry jumps over max_odometry_step, where the motion model was reset; first: {}",
+                    log.odometry_jumps.count, log.odometry_jumps.first));
+  }
+}
+
 void check_odometry(LogCheck& c, const LaserLog& log, const LogCheckOptions& o) {
   double first_t = 0.0, largest = 0.0;
   for (std::size_t i = 1; i < log.scans.size(); ++i) {
@@ -151,6 +167,7 @@ LogCheck check_log(const LaserLog& log, const LogCheckOptions& options) {
         fmt::format("{} malformed lines skipped; first: {}", log.bad_lines, log.first_bad_line_message));
   }
   if (!log.stopped_early.empty()) add(c, Severity::kWarning, "stopped_early", log.stopped_early);
+  report_repairs(c, log);
   if (log.scans.empty()) {
     add(c, Severity::kError, "no_scans", "no laser scans: nothing to map");
     return c;

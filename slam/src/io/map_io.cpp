@@ -9,6 +9,7 @@
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 
+#include "lookahead/slam/io/image_header.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::slam {
@@ -97,8 +98,15 @@ ProbabilityMap read_map(const std::string& yaml_path) {
   const int negate = root["negate"] ? yaml_value<int>(root, "negate", yaml_path) : 0;
   std::filesystem::path image_path(image_name);
   if (image_path.is_relative()) image_path = std::filesystem::path(yaml_path).parent_path() / image_path;
-  const cv::Mat image = cv::imread(image_path.string(), cv::IMREAD_GRAYSCALE);
+  check_image_header(image_path.string(), yaml_path, 0, "image");
+  cv::Mat image;
+  try {
+    image = cv::imread(image_path.string(), cv::IMREAD_GRAYSCALE);
+  } catch (const cv::Exception& e) {  // a header OpenCV's decoder refuses
+    throw ParseError(yaml_path, 0, "image", image_path.string(), "cannot read image: " + e.msg);
+  }
   if (image.empty()) throw ParseError(yaml_path, 0, "image", image_path.string(), "cannot read image");
+  check_image_size(image.cols, image.rows, yaml_path, 0, "image");
   m.width = image.cols;
   m.height = image.rows;
   m.p.resize(static_cast<std::size_t>(m.width) * static_cast<std::size_t>(m.height));

@@ -24,7 +24,9 @@
 #include <mrpt/serialization/CArchive.h>
 
 #include "lookahead/slam/io/laser_log.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "rawlog_guard.hpp"
 
 namespace lookahead::slam {
 namespace {
@@ -166,8 +168,7 @@ void handle_bad(LaserLog& log, const LogReadOptions& options, std::size_t record
   ++log.bad_lines;
 }
 
-/// Reads records until a clean end of file, or until the stream breaks (then nothing after
-/// the broken object can be trusted, so reading stops).
+/// Reads records until a clean end of file, or until the stream breaks.
 void read_records(mrpt::serialization::CArchive& archive, RawlogReader& reader, LaserLog& log,
                   const LogReadOptions& options) {
   for (std::size_t record = 1;; ++record) {
@@ -177,9 +178,12 @@ void read_records(mrpt::serialization::CArchive& archive, RawlogReader& reader, 
     } catch (const mrpt::serialization::CExceptionEOF&) {
       return;  // MRPT's signal for an end of file between two objects
     } catch (const std::exception& e) {
+      // Nothing after a broken object can be trusted: a truncated or corrupt file ends here.
+      // What came before it is mapped; with no scan yet the file is not a rawlog at all.
       const std::string reason = "cannot deserialise: " + mrpt_message(e.what());
       log.lines_read = record;
-      handle_bad(log, options, record, {"record", "", reason});
+      if (log.scans.empty()) handle_bad(log, options, record, {"record", "", reason});
+      log.stopped_early = ParseError(log.path, record, "record", "", reason).what();
       return;
     }
     log.lines_read = record;
@@ -197,7 +201,7 @@ void read_records(mrpt::serialization::CArchive& archive, RawlogReader& reader, 
 
 }  // namespace
 
-LaserLog read_mrpt_rawlog(const std::string& path, const LogReadOptions& options) {
+LaserLog detail::read_mrpt_rawlog_unguarded(const std::string& path, const LogReadOptions& options) {
   LaserLog log;
   log.path = path;
   std::error_code ec;
@@ -222,6 +226,7 @@ LaserLog read_mrpt_rawlog(const std::string& path, const LogReadOptions& options
   read_records(archive, reader, log, options);
   log.scan_source = "CObservation2DRangeScan";
   log.odometry_source = "CActionRobotMovement2D or CObservationOdometry";
+  check_odometry(log, options);
   return log;
 }
 

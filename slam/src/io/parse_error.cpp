@@ -25,6 +25,7 @@ ParseError::ParseError(std::string file, std::size_t line, std::string field, st
       file_(std::move(file)),
       line_(line),
       field_(std::move(field)),
-      value_(std::move(value)) {}
+      value_(std::move(value)),
+      reason_(reason) {}
 
 }  // namespace lookahead::slam

@@ -19,6 +19,7 @@
 
 #include "bag_frames.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::slam {
@@ -216,6 +217,7 @@ LaserLog read_ros_bag(const std::string& path, const LogReadOptions& options) {
   }
   log.lines_read = 0;
   for (const auto& m : log.messages) log.lines_read += m.count;
+  check_odometry(log, options);
   return log;
 }
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "lookahead/slam/limits/input_limits.hpp"
+
 namespace lookahead::slam {
 
 OdometryMotionModel::OdometryMotionModel(const MotionModelOptions& options) : o_(options) {
@@ -13,12 +15,14 @@ OdometryMotionModel::OdometryMotionModel(const MotionModelOptions& options) : o_
   const auto require = [](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("motion model: ") + what);
   };
-  require(o_.srr >= 0, "srr >= 0");
-  require(o_.srt >= 0, "srt >= 0");
-  require(o_.str >= 0, "str >= 0");
-  require(o_.stt >= 0, "stt >= 0");
-  require(o_.min_sigma_xy > 0, "min_sigma_xy > 0");
-  require(o_.min_sigma_theta > 0, "min_sigma_theta > 0");
+  // Upper bound: limits::kMaxMotionNoise (noise that large carries no information and
+  // scatters the particles kilometres off the map).
+  require(o_.srr >= 0 && o_.srr <= limits::kMaxMotionNoise, "srr in [0, 10]");
+  require(o_.srt >= 0 && o_.srt <= limits::kMaxMotionNoise, "srt in [0, 10]");
+  require(o_.str >= 0 && o_.str <= limits::kMaxMotionNoise, "str in [0, 10]");
+  require(o_.stt >= 0 && o_.stt <= limits::kMaxMotionNoise, "stt in [0, 10]");
+  require(o_.min_sigma_xy > 0 && o_.min_sigma_xy <= limits::kMaxMotionNoise, "min_sigma_xy in (0, 10]");
+  require(o_.min_sigma_theta > 0 && o_.min_sigma_theta <= limits::kMaxMotionNoise, "min_sigma_theta in (0, 10]");
 }
 
 void OdometryMotionModel::sigmas(const Pose2& u, double& sx, double& sy, double& st) const {

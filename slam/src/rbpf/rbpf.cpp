@@ -7,7 +7,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/limits/input_limits.hpp"
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 
@@ -34,6 +38,15 @@ void validate(const RbpfOptions& o) {
   if (pr.min_predicted_beams < 1 || pr.max_hypotheses < 1) {
     throw std::invalid_argument("prediction.min_predicted_beams and max_hypotheses >= 1");
   }
+}
+
+// Every particle writes its own copy of each tile a scan touches (copy-on-write), so after
+// the first update the particles hold about N times the tiles the first scan wrote.
+void check_particle_memory(const OccupancyGrid& first_map, int particles) {
+  const auto tiles = static_cast<double>(first_map.tile_count());
+  limits::check_memory(particles * tiles * sizeof(GridTile),
+                       fmt::format("{} particles x {} map tiles of {} bytes", particles,
+                                   first_map.tile_count(), sizeof(GridTile)));
 }
 
 }  // namespace
@@ -65,6 +78,7 @@ void Rbpf::initialize(const LaserScan& scan) {
   // The map frame is the odometry frame at the first scan, so maps and odometry overlay.
   Particle p{scan.odometry, prototype_grid_, 0.0, nullptr, {}};
   insert_scan(p.map, p.pose, scan, options_.insert);
+  check_particle_memory(p.map, options_.particles);
   p.trajectory = std::make_shared<TrajectoryNode>(p.pose, 0, nullptr);
   particles_.assign(static_cast<std::size_t>(options_.particles), p);
   last_update_odometry_ = scan.odometry;
@@ -99,14 +113,18 @@ void Rbpf::update_particles(const LaserScan& scan) {
   const int threads = options_.threads > 0 ? options_.threads : omp_get_num_procs();
   std::vector<char> failed(particles_.size(), 0);
   std::vector<HypothesisScore> predicted(particles_.size());
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    std::mt19937_64 rng(mix_seed(options_.seed, stats_.updates, static_cast<std::uint64_t>(i)));
-    bool f = false;
-    update_particle(particles_[k], u, scan, prepared, rng, f, predicted[k]);
-    failed[k] = f ? 1 : 0;
+    errors.run([&] {
+      const auto k = static_cast<std::size_t>(i);
+      std::mt19937_64 rng(mix_seed(options_.seed, stats_.updates, static_cast<std::uint64_t>(i)));
+      bool f = false;
+      update_particle(particles_[k], u, scan, prepared, rng, f, predicted[k]);
+      failed[k] = f ? 1 : 0;
+    });
   }
+  errors.rethrow();
   if (!hypotheses_.empty()) apply_hypothesis_weights(predicted);
   stats_.match_failures += static_cast<std::size_t>(std::count(failed.begin(), failed.end(), 1));
   stats_.particle_updates += particles_.size();

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "lookahead/slam/geometry/pose2.hpp"
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/rbpf3d/motion3_model.hpp"
 
@@ -82,16 +83,20 @@ void Rbpf3d::predict_and_weigh(const RangeSweep& sweep) {
   }
   std::vector<std::uint64_t> seeds(particles_.size());
   for (auto& s : seeds) s = rng_();  // drawn in order: same result on any thread count
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
   for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
-    Particle3& p = particles_[static_cast<std::size_t>(i)];
-    std::mt19937_64 rng(seeds[static_cast<std::size_t>(i)]);
-    p.pose = sample_motion3(p.pose, increment, imu, yaw_change, options_.motion, rng);
-    std::vector<Eigen::Vector3d> world(ends.size());
-    for (std::size_t k = 0; k < ends.size(); ++k) world[k] = p.pose * ends[k];
-    p.log_weight +=
-        options_.weight_exponent * octree_log_likelihood(p.map, world, options_.likelihood);
+    errors.run([&] {
+      Particle3& p = particles_[static_cast<std::size_t>(i)];
+      std::mt19937_64 rng(seeds[static_cast<std::size_t>(i)]);
+      p.pose = sample_motion3(p.pose, increment, imu, yaw_change, options_.motion, rng);
+      std::vector<Eigen::Vector3d> world(ends.size());
+      for (std::size_t k = 0; k < ends.size(); ++k) world[k] = p.pose * ends[k];
+      p.log_weight +=
+          options_.weight_exponent * octree_log_likelihood(p.map, world, options_.likelihood);
+    });
   }
+  errors.rethrow();
   stats_.predict_weight_seconds += seconds_since(start);
 }
 
@@ -119,16 +124,20 @@ void Rbpf3d::insert(const RangeSweep& sweep) {
        i += static_cast<std::size_t>(options_.insert_ray_step)) {
     local.push_back(sweep.rays[i]);
   }
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
   for (int i = 0; i < static_cast<int>(particles_.size()); ++i) {
-    Particle3& p = particles_[static_cast<std::size_t>(i)];
-    std::vector<Ray3> rays(local.size());
-    for (std::size_t k = 0; k < local.size(); ++k) {
-      rays[k] = {p.pose * local[k].origin, p.pose * local[k].end, local[k].hit};
-    }
-    insert_rays(p.map, rays, options_.insert);
-    p.trajectory = std::make_shared<const Trajectory3Node>(p.pose, p.trajectory);
+    errors.run([&] {
+      Particle3& p = particles_[static_cast<std::size_t>(i)];
+      std::vector<Ray3> rays(local.size());
+      for (std::size_t k = 0; k < local.size(); ++k) {
+        rays[k] = {p.pose * local[k].origin, p.pose * local[k].end, local[k].hit};
+      }
+      insert_rays(p.map, rays, options_.insert);
+      p.trajectory = std::make_shared<const Trajectory3Node>(p.pose, p.trajectory);
+    });
   }
+  errors.rethrow();
   stats_.insert_seconds += seconds_since(start);
 }
 

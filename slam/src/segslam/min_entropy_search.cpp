@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "lookahead/slam/eval/map_entropy.hpp"
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/segslam/placed_paths.hpp"
@@ -71,12 +72,16 @@ MinEntropyResult min_entropy_search(const SegSlam& filter, int samples, std::uin
   const std::vector<double> w = normalized_weights(logw);
   std::vector<MapSample> drawn(static_cast<std::size_t>(samples));
   const int t = threads > 0 ? threads : omp_get_num_procs();
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(t)
   for (int i = 0; i < samples; ++i) {
-    std::mt19937_64 rng(mix_seed(seed, 0xE27, static_cast<std::uint64_t>(i)));
-    std::discrete_distribution<std::size_t> pick(w.begin(), w.end());
-    drawn[static_cast<std::size_t>(i)] = sample_full_map(filter, pick(rng), rng);
+    errors.run([&] {
+      std::mt19937_64 rng(mix_seed(seed, 0xE27, static_cast<std::uint64_t>(i)));
+      std::discrete_distribution<std::size_t> pick(w.begin(), w.end());
+      drawn[static_cast<std::size_t>(i)] = sample_full_map(filter, pick(rng), rng);
+    });
   }
+  errors.rethrow();
   MinEntropyResult r;
   if (drawn.empty()) {  // map_samples 0 (validated: only with offline.particle_chain)
     r.best = particle_chain_sample(filter, filter.best_particle());

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "lookahead/slam/eval/octree_map_entropy.hpp"
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/segslam/level_coarse_search.hpp"
 #include "lookahead/slam/segslam/submap_choice.hpp"
 
@@ -140,14 +141,16 @@ std::vector<std::vector<LevelCoarseResult>> region_peaks(const OctreeMatchTarget
 RefinedMatches refine_each(const OctreeMatchTarget& target, const SweepWindow& w, const std::vector<Pose4>& seeds,
                            const MatchingOptions& o, const StructureTestOptions& so) {
   RefinedMatches refined;
+  ParallelErrors errors;
   for (const Pose4& p : seeds) refined.try_emplace(std::make_tuple(p.x, p.y, p.z, p.yaw));
   for (auto& [key, m] : refined) {
     WindowMatch3* result = &m;
     const Pose4 seed{std::get<0>(key), std::get<1>(key), std::get<2>(key), std::get<3>(key)};
 #pragma omp task default(shared) firstprivate(result, seed)
-    *result = refine_match(target, w, seed, seed, o, so);
+    errors.run([&] { *result = refine_match(target, w, seed, seed, o, so); });
   }
 #pragma omp taskwait
+  errors.rethrow();
   return refined;
 }
 

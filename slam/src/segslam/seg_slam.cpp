@@ -12,6 +12,8 @@
 #include <tuple>
 
 #include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/limits/input_limits.hpp"
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/segslam/candidate_reach.hpp"
@@ -72,6 +74,11 @@ void SegSlam::initialize() {
   p.submap.entry = p.submap.exit = p.pose;
   p.submap.map = prototype_grid_;
   insert_scan(p.submap.map, p.pose, s, rbpf_.insert);
+  // Each particle copies the tiles a scan touches (copy-on-write): N times the first scan's.
+  limits::check_memory(static_cast<double>(rbpf_.particles) * static_cast<double>(p.submap.map.tile_count()) *
+                           sizeof(GridTile),
+                       fmt::format("{} particles x {} map tiles of {} bytes", rbpf_.particles,
+                                   p.submap.map.tile_count(), sizeof(GridTile)));
   p.submap.path.push_back({0, p.pose});
   particles_.assign(static_cast<std::size_t>(rbpf_.particles), p);
   next_pending_ = 1;
@@ -296,26 +303,30 @@ void SegSlam::update(std::size_t k) {
   std::vector<double> gain(particles_.size(), 0.0);
   std::vector<char> warm(particles_.size(), 0), failed(particles_.size(), 0);
   const int threads = rbpf_.threads > 0 ? rbpf_.threads : omp_get_num_procs();
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (int i = 0; i < n; ++i) {
-    SegParticle& p = particles_[static_cast<std::size_t>(i)];
-    std::mt19937_64 rng(mix_seed(rbpf_.seed, stats_.updates, static_cast<std::uint64_t>(i)));
-    transitions[static_cast<std::size_t>(i)] = predict_submap(p, window, rng);
-    const bool is_warm = p.submap_updates >= rbpf_.warmup_updates || p.submap.parent != kNoSubmap;
-    const double before = p.log_weight;
-    // A locked submap is localised in, never written (SegSLAM sec. 6).
-    failed[static_cast<std::size_t>(i)] =
-        p.submap.locked ? draw_particle(models, p.submap.map, p.pose, p.log_weight, u, prepared, is_warm, rng)
-                        : advance_particle(models, p.submap.map, p.pose, p.log_weight, u, scans_[k], prepared, is_warm, rng);
-    gain[static_cast<std::size_t>(i)] = p.log_weight - before;
-    warm[static_cast<std::size_t>(i)] = is_warm;
-    p.submap.path.push_back({k, p.pose});
-    p.submap.interval.last_scan = k;
-    p.submap.interval.t_end = scans_[k].timestamp;
-    p.submap.exit = p.pose;
-    ++p.submap_updates;
-    p.motion_error += motion_error_increment(u, options_.segmentation);
+    errors.run([&] {
+      SegParticle& p = particles_[static_cast<std::size_t>(i)];
+      std::mt19937_64 rng(mix_seed(rbpf_.seed, stats_.updates, static_cast<std::uint64_t>(i)));
+      transitions[static_cast<std::size_t>(i)] = predict_submap(p, window, rng);
+      const bool is_warm = p.submap_updates >= rbpf_.warmup_updates || p.submap.parent != kNoSubmap;
+      const double before = p.log_weight;
+      // A locked submap is localised in, never written (sec. 6).
+      failed[static_cast<std::size_t>(i)] =
+          p.submap.locked ? draw_particle(models, p.submap.map, p.pose, p.log_weight, u, prepared, is_warm, rng)
+                          : advance_particle(models, p.submap.map, p.pose, p.log_weight, u, scans_[k], prepared, is_warm, rng);
+      gain[static_cast<std::size_t>(i)] = p.log_weight - before;
+      warm[static_cast<std::size_t>(i)] = is_warm;
+      p.submap.path.push_back({k, p.pose});
+      p.submap.interval.last_scan = k;
+      p.submap.interval.t_end = scans_[k].timestamp;
+      p.submap.exit = p.pose;
+      ++p.submap_updates;
+      p.motion_error += motion_error_increment(u, options_.segmentation);
+    });
   }
+  errors.rethrow();
   // Deviation: a fresh submap has nothing to weigh its first scans against; it gets the mean
   // factor of the other particles, so starting a submap is neither rewarded nor punished.
   double sum = 0;

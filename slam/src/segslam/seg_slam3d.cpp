@@ -12,6 +12,7 @@
 
 #include "lookahead/slam/octree/octree_likelihood.hpp"
 #include "lookahead/slam/octree/ray_insertion.hpp"
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/rbpf3d/motion3_model.hpp"
@@ -260,21 +261,29 @@ void SegSlam3d::update(std::size_t k) {
   // Prediction (SegSLAM eq. (3)) in three steps: each particle asks for its matches, the capped searches
   // run for all of them together (seg_slam3d_capped.cpp), each particle draws its submap and
   // steps; the wide searches asked for run last, beside the steps of the particles that asked.
+  ParallelErrors asked;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
   for (int i = 0; i < n; ++i) {
-    const auto u = static_cast<std::size_t>(i);
-    rngs[u].seed(mix_seed(options_.filter.seed, stats_.updates, static_cast<std::uint64_t>(i)));
-    transitions[u] = ask_submap(particles_[u], w, rngs[u]);
+    asked.run([&] {
+      const auto u = static_cast<std::size_t>(i);
+      rngs[u].seed(mix_seed(options_.filter.seed, stats_.updates, static_cast<std::uint64_t>(i)));
+      transitions[u] = ask_submap(particles_[u], w, rngs[u]);
+    });
   }
+  asked.rethrow();
   run_capped_stage(transitions, w);
+  ParallelErrors stepped;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(thread_count())
   for (int i = 0; i < n; ++i) {
-    const auto u = static_cast<std::size_t>(i);
-    SegParticle3& p = particles_[u];
-    choose_submap(p, transitions[u], w, rngs[u]);
-    warm[u] = p.submap_updates >= options_.extras.warmup_updates || p.submap.parent != kNoSubmap;
-    if (!transitions[u].wide) step_particle(u);
+    stepped.run([&] {
+      const auto u = static_cast<std::size_t>(i);
+      SegParticle3& p = particles_[u];
+      choose_submap(p, transitions[u], w, rngs[u]);
+      warm[u] = p.submap_updates >= options_.extras.warmup_updates || p.submap.parent != kNoSubmap;
+      if (!transitions[u].wide) step_particle(u);
+    });
   }
+  stepped.rethrow();
   run_wide_stage(transitions, w, step_particle);
   // Deviation (as in 2D): a fresh submap has little to weigh its first sweeps against; it
   // gets the mean factor of the other particles, so starting a submap is neither rewarded
@@ -308,18 +317,20 @@ void SegSlam3d::run_wide_stage(std::vector<Transition>& transitions, const Sweep
   std::vector<WideSearch> searches = wide_searches(requests);
   // As tasks: a search hands its ICP refinements out as tasks too (wide_reentry.cpp), so the
   // thread done with the steps helps with the one search there usually is.
+  ParallelErrors errors;
 #pragma omp parallel num_threads(thread_count()) if (!waiting.empty())
 #pragma omp single
   {
     for (WideSearch& search : searches) {
 #pragma omp task default(shared)
-      run_wide_search(search, w);
+      errors.run([&] { run_wide_search(search, w); });
     }
     for (const std::size_t u : waiting) {
 #pragma omp task default(shared) firstprivate(u)
-      step_particle(u);
+      errors.run([&] { step_particle(u); });
     }
   }
+  errors.rethrow();
   for (WideSearch& search : searches) {
     for (std::size_t m = 0; m < search.members.size(); ++m) {
       Transition& t = transitions[search.members[m]];

@@ -15,6 +15,7 @@
 #include <map>
 #include <utility>
 
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/segslam/localization_match3.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "seg_slam3d_transition.hpp"
@@ -60,12 +61,14 @@ void SegSlam3d::run_capped_stage(std::vector<Transition>& transitions, const Swe
   }
   if (searches.empty()) return;
   // As tasks: a search hands its ICP refinements out as tasks too (match_regions).
+  ParallelErrors errors;
 #pragma omp parallel num_threads(thread_count())
 #pragma omp single
   for (CappedSearch& search : searches) {
 #pragma omp task default(shared)
-    run_capped_search(search, w);
+    errors.run([&] { run_capped_search(search, w); });
   }
+  errors.rethrow();
   for (const Member& m : members) {
     transitions[m.particle].screens[m.candidate] = searches[m.search].results[m.region];
   }

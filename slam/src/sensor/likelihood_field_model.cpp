@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "lookahead/slam/limits/input_limits.hpp"
+
 namespace lookahead::slam {
 
 PreparedScan prepare_scan(const LaserScan& scan, const LikelihoodOptions& options) {
@@ -25,6 +27,9 @@ LikelihoodFieldModel::LikelihoodFieldModel(const LikelihoodOptions& options,
   if (!(options.sigma > 0) || !(options.random_floor > 0 && options.random_floor < 1) ||
       !(options.unknown_likelihood > 0) || !(options.temperature > 0)) {
     throw std::invalid_argument("likelihood: sigma, random_floor, unknown_likelihood, temperature");
+  }
+  if (!(options.max_range > 0 && options.max_range <= limits::kMaxLaserRange)) {
+    throw std::invalid_argument("likelihood: max_range in (0, 1000] m (limits::kMaxLaserRange)");
   }
   const double res = like_grid.resolution();
   const int r2 = like_grid.distance_radius_cells() * like_grid.distance_radius_cells();

@@ -6,6 +6,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/sim3d/octree_ray_cast.hpp"
 #include "route_follower.hpp"
 
@@ -60,19 +61,23 @@ RangeSweep make_sweep(const World3& world, const SpinningLaserOptions& o,
   const Pose3 mount = make_pose3({0.0, 0.0, o.mount_height}, {});
   const auto beams = static_cast<std::size_t>(o.beams_per_line);
   std::vector<double> range(lines.size() * beams, -1.0);
+  ParallelErrors errors;
 #pragma omp parallel for schedule(dynamic, 4)
   for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
-    const Pose3 laser = lines[static_cast<std::size_t>(l)].truth * mount;
-    for (std::size_t b = 0; b < beams; ++b) {
-      const double alpha =
-          -M_PI / 2 + M_PI * static_cast<double>(b) / static_cast<double>(beams - 1);
-      const Eigen::Vector3d dir =
-          laser.linear() * beam_direction(alpha, lines[static_cast<std::size_t>(l)].phi);
-      if (const auto r = cast_ray(world.map, laser.translation(), dir, o.max_range)) {
-        range[static_cast<std::size_t>(l) * beams + b] = *r;
+    errors.run([&] {
+      const Pose3 laser = lines[static_cast<std::size_t>(l)].truth * mount;
+      for (std::size_t b = 0; b < beams; ++b) {
+        const double alpha =
+            -M_PI / 2 + M_PI * static_cast<double>(b) / static_cast<double>(beams - 1);
+        const Eigen::Vector3d dir =
+            laser.linear() * beam_direction(alpha, lines[static_cast<std::size_t>(l)].phi);
+        if (const auto r = cast_ray(world.map, laser.translation(), dir, o.max_range)) {
+          range[static_cast<std::size_t>(l) * beams + b] = *r;
+        }
       }
-    }
+    });
   }
+  errors.rethrow();
   RangeSweep sweep;
   sweep.truth = lines.back().truth;
   sweep.odometry = lines.back().odometry;

@@ -31,8 +31,9 @@
 // OMPL's nearest-neighbour tree (GNAT, seeded from the process-wide sequence); its search is
 // exact, so that can only reorder equally distant neighbours, which continuous random
 // samples make vanishingly unlikely. Checked: same paths across processes and call orders.
-// Result: with the same seed and a search ended by max_samples, the path is the same in any
-// process and call order; a search ended by the clock depends on the machine's speed.
+// Result: with the same seed and a sample budget (max_samples, samples_per_m2), the path is
+// the same in any process, call order and machine load: no clock takes part in that search.
+// Only a search without a sample budget is ended by time_budget, and depends on the speed.
 #pragma once
 
 #include <cstddef>

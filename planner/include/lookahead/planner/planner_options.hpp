@@ -37,13 +37,14 @@ inline constexpr std::int64_t kMinBoundedSamples = 300;
 
 struct PlannerOptions {
   PlannerAlgorithm algorithm = PlannerAlgorithm::kRrtStar;
-  /// Wall-clock budget of the search [s], (0, 60]. The planners are anytime: they keep
-  /// shortening the path until the budget (or max_samples) is spent. Costmap construction
-  /// and path simplification come on top (linear-time passes, milliseconds).
+  /// Wall-clock budget of a search without a sample budget [s], (0, 60]. The planners are
+  /// anytime: they keep shortening the path until the budget is spent. Costmap construction
+  /// and path simplification come on top (linear-time passes, milliseconds). Ignored when
+  /// the search has a sample budget (max_samples or samples_per_m2).
   double time_budget = 0.5;
-  /// Stop after this many samples as well, 0 = no limit, [0, 1e8]. When the search ends by
-  /// this count, not by the clock, the result depends on `seed` only (see determinism in
-  /// plan.hpp).
+  /// Stop after this many samples, 0 = no limit (time_budget ends the search), [0, 1e8].
+  /// A search with a sample budget is ended by that count alone, never by the clock, so
+  /// its result depends on `seed` only, whatever the load (see determinism in plan.hpp).
   std::int64_t max_samples = 0;
   /// A path may end this close to the goal [m], [0, 5]; the exact goal is appended when the
   /// last segment to it is free.

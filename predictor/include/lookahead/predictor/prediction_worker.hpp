@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <exception>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -37,7 +38,8 @@ class PredictionWorker {
   /// the first candidate with a control point in range is predicted (a log has no
   /// exploration goal, so any frontier ahead that allows a prediction will do).
   void request(slam::OccupancyGrid map, std::vector<std::pair<double, double>> candidates);
-  /// The finished prediction, if one is ready (never blocks).
+  /// The finished prediction, if one is ready (never blocks). An exception the prediction
+  /// threw on the worker thread is rethrown here (and by wait()), on the caller's thread.
   std::optional<Prediction> poll();
   /// Blocks until the queued and running requests are done; their latest result, if any.
   /// A simulation uses it to deliver predictions at a fixed simulated latency, so that
@@ -54,6 +56,7 @@ class PredictionWorker {
     std::vector<std::pair<double, double>> targets;
   };
   Prediction run(const Request& r);
+  std::optional<Prediction> take_result();  // with mutex_ held
   const ExploredMapModel& model_of(const slam::OccupancyGrid& map);
   void loop();
   Priority priority_;
@@ -63,6 +66,7 @@ class PredictionWorker {
   std::condition_variable wake_, done_;
   std::optional<Request> queued_;
   std::optional<Prediction> result_;
+  std::exception_ptr error_;  // thrown by run(), handed to the next poll() or wait()
   bool running_ = false, stop_ = false;
   // The last map modelled and its model, touched by the worker thread only: a mission
   // sends the targets of one selection one by one on the same map.

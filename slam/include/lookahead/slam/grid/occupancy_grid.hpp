@@ -96,6 +96,8 @@ class OccupancyGrid {
   int hit_, miss_, min_, max_, on_, off_;
   int radius_cells_;
   std::shared_ptr<const std::vector<Offset>> disk_;  // offsets within the radius, by distance
+  /// Throws limits::ResourceLimitError when a tile table this size exceeds kMaxGridTiles.
+  void check_extent(std::int64_t tiles_w, std::int64_t tiles_h) const;
   int tile_x0_ = 0, tile_y0_ = 0, tiles_w_ = 0, tiles_h_ = 0;
   std::vector<std::shared_ptr<GridTile>> tiles_;
 };

@@ -35,7 +35,17 @@ struct LogReadOptions {
   /// Readings at or above this are no-returns even where the log claims a larger max range
   /// (CARMEN logs write 81.83/81.91 for "no echo") [m].
   double no_return_range = 80.0;
+  /// Odometry steps between consecutive scans longer than this are jumps: the motion model
+  /// is reset there (odometry_check.hpp) [m], (0, 1000]. A robot does not cover 10 m
+  /// between two scans; a reset or wrapped-around odometer does.
+  double max_odometry_step = 10.0;
   BagReadOptions bag;
+};
+
+/// Scans a reader dropped or changed, with the first as "file:line: what" for the log.
+struct LogEvent {
+  std::size_t count = 0;
+  std::string first;
 };
 
 /// One message kind of the input (CARMEN: the line's first word; bag: topic and type).
@@ -61,6 +71,9 @@ struct LaserLog {
   /// Why reading stopped before the end of the input (names topic, frame or time); empty
   /// when it read to the end.
   std::string stopped_early;
+  LogEvent non_finite;      ///< scans with a non-finite odometry pose or time, skipped
+  LogEvent time_reversals;  ///< scans stamped before the previous one, kept in log order
+  LogEvent odometry_jumps;  ///< steps over max_odometry_step, where the motion model was reset
 };
 
 /// Reads a CARMEN log (.log/.clf, or the same gzip-compressed with .gz).

@@ -17,12 +17,14 @@ class ParseError : public std::runtime_error {
   [[nodiscard]] std::size_t line() const { return line_; }
   [[nodiscard]] const std::string& field() const { return field_; }
   [[nodiscard]] const std::string& value() const { return value_; }
+  [[nodiscard]] const std::string& reason() const { return reason_; }
 
  private:
   std::string file_;
   std::size_t line_;
   std::string field_;
   std::string value_;
+  std::string reason_;
 };
 
 }  // namespace lookahead::slam
