@@ -10,7 +10,7 @@
 #include "lookahead/exploration/carmen_writer.hpp"
 #include "lookahead/exploration/prediction_targets.hpp"
 #include "lookahead/exploration/target_selection.hpp"
-#include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::exploration {
 

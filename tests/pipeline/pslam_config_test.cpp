@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/predictor/pslam_config.hpp"
+#include "lookahead/pipeline/pslam_config.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
-#include "lookahead/predictor/log_prediction_config.hpp"
-#include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/pipeline/log_prediction_config.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
 
-namespace lookahead::predictor {
+namespace lookahead::pipeline {
 namespace {
 
 // config/slam/default.yaml documents the defaults: it must say exactly what the code does.
@@ -92,4 +92,4 @@ TEST(PslamConfig, BadAndImpossibleValuesAreRejected) {
 }
 
 }  // namespace
-}  // namespace lookahead::predictor
+}  // namespace lookahead::pipeline

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/predictor/log_prediction_config.hpp"
+#include "lookahead/pipeline/log_prediction_config.hpp"
 
 #include <stdexcept>
 
@@ -7,13 +7,13 @@
 #include "lookahead/slam/config/yaml_sections.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
-namespace lookahead::predictor {
+namespace lookahead::pipeline {
 namespace {
 
 template <typename V>
 void visit_sections(LogPredictionOptions& o, V&& v) {
   v.section("predictor");
-  visit_predictor_keys(o.predictor, v);
+  predictor::visit_predictor_keys(o.predictor, v);
   v.section("log_targets");
   SlamLookaheadOptions& t = o.targets;
   v("period_updates", t.period_updates, "a new prediction request every this many filter updates");
@@ -70,4 +70,4 @@ std::string dump_log_prediction_options(const LogPredictionOptions& options) {
   return d.str();
 }
 
-}  // namespace lookahead::predictor
+}  // namespace lookahead::pipeline

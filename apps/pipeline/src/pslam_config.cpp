@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/predictor/pslam_config.hpp"
+#include "lookahead/pipeline/pslam_config.hpp"
 
-#include "lookahead/slam/config/slam_config.hpp"
 #include "lookahead/slam/config/yaml_sections.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
 
-namespace lookahead::predictor {
+namespace lookahead::pipeline {
 
 PslamOptions load_pslam_options(const std::string& path) {
   PslamOptions f;
@@ -21,4 +21,4 @@ std::string dump_pslam_options(const PslamOptions& options) {
          dump_log_prediction_options(options.prediction);
 }
 
-}  // namespace lookahead::predictor
+}  // namespace lookahead::pipeline

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../io/carmen_fields.hpp"
+#include "lookahead/slam/io/carmen_fields.hpp"
 #include "lookahead/slam/io/line_reader.hpp"
 
 namespace lookahead::slam {

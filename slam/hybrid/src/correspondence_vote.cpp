@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/hybrid/correspondence_vote.hpp"
+#include "correspondence_vote.hpp"
 
 #include <map>
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/hybrid/ekf_front_end.hpp"
+#include "ekf_front_end.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "lookahead/slam/hybrid/jcbb.hpp"
+#include "jcbb.hpp"
 
 namespace lookahead::slam::hybrid {
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "lookahead/slam/hybrid/correspondence_vote.hpp"
-#include "lookahead/slam/hybrid/moment_matching.hpp"
-#include "lookahead/slam/hybrid/pose_sampling.hpp"
+#include "correspondence_vote.hpp"
+#include "moment_matching.hpp"
+#include "pose_sampling.hpp"
 
 namespace lookahead::slam::hybrid {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lookahead/slam/hybrid/jcbb.hpp"
+#include "jcbb.hpp"
 #include "lookahead/slam/hybrid/motion_step.hpp"
 
 namespace lookahead::slam::hybrid {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/hybrid/moment_matching.hpp"
-
-#include "lookahead/slam/hybrid/jcbb.hpp"
+#include "moment_matching.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <map>
+
+#include "jcbb.hpp"
 
 namespace lookahead::slam::hybrid {
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/hybrid/pose_sampling.hpp"
+#include "pose_sampling.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>

@@ -5,7 +5,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "lookahead/slam/hybrid/ekf_front_end.hpp"
+#include "ekf_front_end.hpp"
 #include "lookahead/slam/hybrid/fastslam.hpp"
 
 namespace lookahead::slam::hybrid {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/rbpf/particle_step.hpp"
 
-#include "lookahead/slam/grid/scan_inserter.hpp"
 #include "lookahead/slam/rbpf/improved_proposal.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::slam {
 

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "lookahead/slam/grid/scan_inserter.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::slam {
 namespace {

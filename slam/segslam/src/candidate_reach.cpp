@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/segslam/candidate_reach.hpp"
+#include "candidate_reach.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include <unordered_map>
 
 #include "lookahead/slam/grid/grid_tile.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "submap_choice.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

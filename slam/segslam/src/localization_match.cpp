@@ -9,7 +9,7 @@
 #include "lookahead/slam/grid/grid_tile.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/segslam/grid_submap_ops.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "submap_choice.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

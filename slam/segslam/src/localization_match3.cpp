@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/segslam/localization_match3.hpp"
+#include "localization_match3.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "lookahead/slam/rbpf/resampler.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "submap_choice.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

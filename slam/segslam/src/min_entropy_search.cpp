@@ -9,7 +9,7 @@
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
-#include "lookahead/slam/segslam/placed_paths.hpp"
+#include "placed_paths.hpp"
 
 namespace lookahead::slam::segslam {
 

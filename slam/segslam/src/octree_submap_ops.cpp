@@ -2,15 +2,15 @@
 #include "lookahead/slam/segslam/octree_submap_ops.hpp"
 
 #include <algorithm>
-#include <map>
-#include <tuple>
 #include <cmath>
+#include <map>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "lookahead/slam/eval/octree_map_entropy.hpp"
 #include "lookahead/slam/segslam/level_coarse_search.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "submap_choice.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/segment_picture.hpp"
-#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
+#include "trajectory_reconstruction.hpp"
 
 namespace lookahead::slam::segslam {
 

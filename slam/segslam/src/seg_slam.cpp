@@ -5,21 +5,21 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <tuple>
 
-#include "lookahead/slam/grid/scan_inserter.hpp"
+#include "candidate_reach.hpp"
+#include "compute_once.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
-#include "lookahead/slam/segslam/candidate_reach.hpp"
-#include "lookahead/slam/segslam/compute_once.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
-#include "lookahead/slam/segslam/segmentation.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
-#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
+#include "segmentation.hpp"
+#include "submap_choice.hpp"
+#include "trajectory_reconstruction.hpp"
 
 namespace lookahead::slam::segslam {
 

@@ -16,10 +16,10 @@
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/rbpf3d/motion3_model.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
-#include "lookahead/slam/segslam/segmentation.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
-#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
 #include "seg_slam3d_transition.hpp"
+#include "segmentation.hpp"
+#include "submap_choice.hpp"
+#include "trajectory_reconstruction.hpp"
 
 namespace lookahead::slam::segslam {
 

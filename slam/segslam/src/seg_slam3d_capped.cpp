@@ -16,7 +16,7 @@
 #include <map>
 #include <utility>
 
-#include "lookahead/slam/segslam/localization_match3.hpp"
+#include "localization_match3.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "seg_slam3d_transition.hpp"
 

@@ -12,15 +12,15 @@
 #include <limits>
 #include <utility>
 
+#include "candidate_reach.hpp"
+#include "localization_match3.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
-#include "lookahead/slam/segslam/candidate_reach.hpp"
-#include "lookahead/slam/segslam/localization_match3.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
-#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
 #include "lookahead/slam/segslam/wide_reentry.hpp"
 #include "seg_slam3d_transition.hpp"
+#include "submap_choice.hpp"
+#include "trajectory_reconstruction.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

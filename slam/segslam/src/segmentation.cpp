@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/segslam/segmentation.hpp"
+#include "segmentation.hpp"
 
 #include <cmath>
 

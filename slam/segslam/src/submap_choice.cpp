@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "submap_choice.hpp"
 
 #include <cmath>
 

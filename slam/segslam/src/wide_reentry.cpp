@@ -5,12 +5,12 @@
 #include <cmath>
 #include <functional>
 #include <map>
-#include <tuple>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include "lookahead/slam/segslam/level_coarse_search.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "submap_choice.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

@@ -14,7 +14,7 @@
 #include <cmath>
 #include <map>
 
-#include "carmen_fields.hpp"
+#include "lookahead/slam/io/carmen_fields.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/line_reader.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "carmen_fields.hpp"
+#include "lookahead/slam/io/carmen_fields.hpp"
 #include "lookahead/slam/io/line_reader.hpp"
 
 namespace lookahead::slam {

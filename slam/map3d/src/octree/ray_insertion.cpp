@@ -8,7 +8,7 @@
 #include <limits>
 #include <utility>
 
-#include "lookahead/slam/octree/voxel_walk.hpp"
+#include "voxel_walk.hpp"
 
 namespace lookahead::slam {
 namespace {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/config/slam3d_config.hpp"
+#include "lookahead/slam/rbpf3d/slam3d_config.hpp"
 
 #include <stdexcept>
 

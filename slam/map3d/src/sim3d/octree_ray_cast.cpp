@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/sim3d/octree_ray_cast.hpp"
 
-#include "lookahead/slam/octree/voxel_walk.hpp"
+#include "octree/voxel_walk.hpp"
 
 namespace lookahead::slam {
 

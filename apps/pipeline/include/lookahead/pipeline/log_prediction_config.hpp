@@ -8,13 +8,13 @@
 #include <set>
 #include <string>
 
+#include "lookahead/pipeline/slam_lookahead.hpp"
 #include "lookahead/predictor/predictor_options.hpp"
-#include "lookahead/predictor/slam_lookahead.hpp"
 
-namespace lookahead::predictor {
+namespace lookahead::pipeline {
 
 struct LogPredictionOptions {
-  PredictorOptions predictor;
+  predictor::PredictorOptions predictor;
   SlamLookaheadOptions targets;
 };
 
@@ -29,4 +29,4 @@ std::set<std::string> log_prediction_section_names();
 /// The options as YAML with a comment per key.
 std::string dump_log_prediction_options(const LogPredictionOptions& options);
 
-}  // namespace lookahead::predictor
+}  // namespace lookahead::pipeline

@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "lookahead/predictor/log_prediction_config.hpp"
+#include "lookahead/pipeline/log_prediction_config.hpp"
 #include "lookahead/slam/rbpf/rbpf_options.hpp"
 
-namespace lookahead::predictor {
+namespace lookahead::pipeline {
 
 struct PslamOptions {
   slam::RbpfOptions rbpf;
@@ -21,4 +21,4 @@ PslamOptions load_pslam_options(const std::string& path);
 /// What `lookahead config --dump` prints and config/slam/default.yaml holds.
 std::string dump_pslam_options(const PslamOptions& options);
 
-}  // namespace lookahead::predictor
+}  // namespace lookahead::pipeline

@@ -21,7 +21,7 @@
 #include "lookahead/predictor/prediction_worker.hpp"
 #include "lookahead/slam/rbpf/rbpf.hpp"
 
-namespace lookahead::predictor {
+namespace lookahead::pipeline {
 
 struct SlamLookaheadOptions {
   int period_updates = 10;   ///< a new target every this many filter updates
@@ -47,7 +47,7 @@ std::vector<std::pair<double, double>> frontiers_ahead(const slam::OccupancyGrid
 struct LogPredictionRecord {
   int update = 0;                 ///< filter update at which it reached the filter
   double x = 0, y = 0;            ///< target [m], best particle's map frame
-  Prediction::Status status = Prediction::Status::kNoControlPoint;
+  predictor::Prediction::Status status = predictor::Prediction::Status::kNoControlPoint;
   double psi = 0, conflict_share = 0;  ///< of the best alignment (0 without one)
   double predicted_area = 0;      ///< [m^2]
 };
@@ -60,16 +60,16 @@ struct SlamLookaheadStatistics {
 
 class SlamLookahead {
  public:
-  SlamLookahead(const PredictorOptions& predictor, const SlamLookaheadOptions& options);
+  SlamLookahead(const predictor::PredictorOptions& predictor, const SlamLookaheadOptions& options);
   /// Call after each filter update: delivers a due hypothesis, requests a new one on time.
   void after_update(slam::Rbpf& filter);
   [[nodiscard]] const SlamLookaheadStatistics& statistics() const { return stats_; }
 
  private:
   SlamLookaheadOptions options_;
-  PredictionWorker worker_;
+  predictor::PredictionWorker worker_;
   SlamLookaheadStatistics stats_;
   int updates_ = 0, due_ = -1;
 };
 
-}  // namespace lookahead::predictor
+}  // namespace lookahead::pipeline

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "lookahead/slam/geometry/pose2.hpp"
+#include "lookahead/slam/grid/hypothesis.hpp"
 #include "lookahead/slam/grid/occupancy_grid.hpp"
-#include "lookahead/slam/rbpf/hypothesis.hpp"
 #include "lookahead/slam/sensor/likelihood_field_model.hpp"
 
 namespace lookahead::slam {

@@ -6,12 +6,12 @@
 #include <cstdint>
 
 #include "lookahead/slam/grid/grid_options.hpp"
-#include "lookahead/slam/grid/scan_inserter.hpp"
-#include "lookahead/slam/rbpf/hypothesis.hpp"
+#include "lookahead/slam/grid/hypothesis.hpp"
 #include "lookahead/slam/rbpf/improved_proposal.hpp"
 #include "lookahead/slam/rbpf/motion_model.hpp"
 #include "lookahead/slam/rbpf/scan_matcher.hpp"
 #include "lookahead/slam/sensor/likelihood_field_model.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::slam {
 
