@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "lookahead/slam/geometry/pose3.hpp"
-#include "lookahead/slam/octree/ray_insertion.hpp"
+#include "lookahead/slam/sensor/ray3.hpp"
 
 namespace lookahead::slam {
 

@@ -12,15 +12,9 @@
 #include <vector>
 
 #include "lookahead/slam/octree/evidence_octree.hpp"
+#include "lookahead/slam/sensor/ray3.hpp"
 
 namespace lookahead::slam {
-
-/// One beam in the map frame. `hit` false: a no-return, which clears space only.
-struct Ray3 {
-  Eigen::Vector3d origin;
-  Eigen::Vector3d end;
-  bool hit = true;
-};
 
 struct RayInsertOptions {
   /// Beams are used up to this length [m]; longer ones are cut there and mark free space
