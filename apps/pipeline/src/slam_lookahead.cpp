@@ -1,23 +1,15 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/predictor/slam_lookahead.hpp"
+#include "lookahead/pipeline/slam_lookahead.hpp"
+
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include <spdlog/spdlog.h>
+#include "lookahead/slam/grid/frontier_cell.hpp"
 
-namespace lookahead::predictor {
-
-namespace {
-
-bool is_frontier_cell(const slam::OccupancyGrid& map, slam::CellIndex c, double free_threshold) {
-  if (!map.is_known(c) || map.probability(c) >= free_threshold) return false;
-  return !map.is_known({c.x + 1, c.y}) || !map.is_known({c.x - 1, c.y}) || !map.is_known({c.x, c.y + 1}) ||
-         !map.is_known({c.x, c.y - 1});
-}
-
-}  // namespace
+namespace lookahead::pipeline {
 
 std::vector<std::pair<double, double>> frontiers_ahead(const slam::OccupancyGrid& map, const slam::Pose2& pose,
                                                        double range, double half_angle, int max_count, double spacing,
@@ -25,9 +17,13 @@ std::vector<std::pair<double, double>> frontiers_ahead(const slam::OccupancyGrid
   const slam::CellIndex lo = map.cell_at(pose.x - range, pose.y - range);
   const slam::CellIndex hi = map.cell_at(pose.x + range, pose.y + range);
   std::vector<std::pair<double, std::pair<double, double>>> found;  // (distance, cell centre)
+  // The plain rule: a free cell next to never-seen space.
+  slam::FrontierCellRule rule;
+  rule.free_threshold = free_threshold;
+  const slam::FrontierCellTest frontier(rule);
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {
-      if (!is_frontier_cell(map, {x, y}, free_threshold)) continue;
+      if (!frontier.is_frontier(map, {x, y})) continue;
       double cx = 0, cy = 0;
       map.cell_center({x, y}, cx, cy);
       const double d = std::hypot(cx - pose.x, cy - pose.y);
@@ -55,17 +51,20 @@ std::optional<std::pair<double, double>> frontier_ahead(const slam::OccupancyGri
   return all.front();
 }
 
-SlamLookahead::SlamLookahead(const PredictorOptions& predictor, const SlamLookaheadOptions& options)
+SlamLookahead::SlamLookahead(const predictor::PredictorOptions& predictor,
+                             const SlamLookaheadOptions& options)
     : options_(options),
-      worker_(predictor, options.wait_for_predictions ? PredictionWorker::Priority::kNormal
-                                                      : PredictionWorker::Priority::kBackground) {}
+      worker_(predictor, options.wait_for_predictions
+                             ? predictor::PredictionWorker::Priority::kNormal
+                             : predictor::PredictionWorker::Priority::kBackground) {}
 
 void SlamLookahead::after_update(slam::Rbpf& filter) {
   ++updates_;
   if (due_ >= 0 && updates_ >= due_) {
     // Live (no waiting), the filter never stalls (measured: waiting for 55 ms predictions
     // cost fr101 40 % of its update rate): a prediction not finished yet is taken later.
-    std::optional<Prediction> p = options_.wait_for_predictions ? worker_.wait() : worker_.poll();
+    std::optional<predictor::Prediction> p =
+        options_.wait_for_predictions ? worker_.wait() : worker_.poll();
     if (!p) {
       if (worker_.busy()) return;
       p = worker_.poll();  // it finished between the two calls
@@ -73,8 +72,8 @@ void SlamLookahead::after_update(slam::Rbpf& filter) {
     due_ = -1;
     if (p) {
       stats_.seconds += p->seconds;
-      stats_.no_control_point += p->status == Prediction::Status::kNoControlPoint;
-      stats_.no_match += p->status == Prediction::Status::kNoMatch;
+      stats_.no_control_point += p->status == predictor::Prediction::Status::kNoControlPoint;
+      stats_.no_match += p->status == predictor::Prediction::Status::kNoMatch;
       LogPredictionRecord r{updates_, p->target_x, p->target_y, p->status};
       if (p->alignment) r.psi = p->alignment->score.psi, r.conflict_share = p->alignment->score.conflict_share();
       r.predicted_area = p->predicted_area;
@@ -97,4 +96,4 @@ void SlamLookahead::after_update(slam::Rbpf& filter) {
   due_ = updates_ + options_.latency_updates;
 }
 
-}  // namespace lookahead::predictor
+}  // namespace lookahead::pipeline
