@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: MIT
 # The dependency arrows of DESIGN.md, checked on every #include of the tree (a ctest runs
-# this with -DSOURCE_DIR=...): apps -> exploration -> {planner, predictor} -> slam. Fails
-# naming the file, line and the include that breaks a rule.
+# this with -DSOURCE_DIR=...): apps -> exploration -> {planner, predictor} -> slam, and inside
+# slam  core <- rbpf <- map3d <- eval <- segslam,  rbpf <- hybrid;  inside core
+# geometry <- grid <- sensor <- io <- config. Fails naming the file, line and the include
+# that breaks a rule.
 #   rule(NAME FOLDER REGEX): no file under FOLDER may include a header matching REGEX.
 set(violations "")
 function(rule name folder regex)
@@ -18,14 +20,34 @@ function(rule name folder regex)
   set(violations "${violations}" PARENT_SCOPE)
 endfunction()
 
-rule("slam sees no layer above it" slam "lookahead/(planner|predictor|exploration)/")
+set(above_slam "lookahead/(planner|predictor|exploration|pipeline)/")
+rule("slam sees no layer above it" slam "${above_slam}")
+
+# The parts of slam, each seeing only the parts it links.
+rule("core is the bottom of slam" slam/core "lookahead/slam/(rbpf|octree|rbpf3d|sim3d|segslam|hybrid|eval)/")
+rule("rbpf sees core only" slam/rbpf "lookahead/slam/(octree|rbpf3d|sim3d|segslam|hybrid|eval)/")
+rule("map3d sees core and rbpf only" slam/map3d "lookahead/slam/(segslam|hybrid|eval)/")
+rule("eval sees core and map3d only" slam/eval "lookahead/slam/(segslam|hybrid)/")
+rule("hybrid sees core and rbpf only" slam/hybrid "lookahead/slam/(octree|rbpf3d|sim3d|segslam|eval)/")
+rule("segslam does not see hybrid" slam/segslam "lookahead/slam/hybrid/")
+
+# Inside core, geometry <- grid <- sensor <- io <- config.
+foreach(dir include/lookahead/slam src)
+  rule("geometry is the bottom of core" slam/core/${dir}/geometry "lookahead/slam/(grid|sensor|io|config)/")
+  rule("grid sees geometry only" slam/core/${dir}/grid "lookahead/slam/(sensor|io|config)/")
+  rule("sensor sees geometry and grid only" slam/core/${dir}/sensor "lookahead/slam/(io|config)/")
+  rule("io does not see config" slam/core/${dir}/io "lookahead/slam/config/")
+endforeach()
+
+# The layers above slam.
 rule("planner depends on slam's grid and geometry only" planner
-     "lookahead/(predictor|exploration)/|lookahead/slam/(rbpf|segslam|hybrid|octree|rbpf3d|sim3d|sensor|eval|io|config)/")
+     "lookahead/(predictor|exploration|pipeline)/|lookahead/slam/(rbpf|segslam|hybrid|octree|rbpf3d|sim3d|sensor|eval|io|config)/")
 rule("predictor depends on slam's maps only" predictor
-     "lookahead/(planner|exploration)/|lookahead/slam/(segslam|hybrid|octree|rbpf3d|sim3d)/")
-set(above_geometry "lookahead/slam/(grid|sensor|io|config|eval|rbpf|segslam|hybrid|octree|rbpf3d|sim3d)/")
-rule("geometry is the bottom of slam" slam/include/lookahead/slam/geometry "${above_geometry}")
-rule("geometry is the bottom of slam" slam/src/geometry "${above_geometry}")
+     "lookahead/(planner|exploration|pipeline)/|lookahead/slam/(rbpf|segslam|hybrid|octree|rbpf3d|sim3d|eval)/")
+rule("exploration sees slam's core and rbpf only" exploration
+     "lookahead/pipeline/|lookahead/slam/(segslam|hybrid|octree|rbpf3d|sim3d|eval)/")
+rule("the log pipeline sees predictor and slam's core and rbpf only" apps/pipeline
+     "lookahead/exploration/|lookahead/slam/(segslam|hybrid|octree|rbpf3d|sim3d|eval)/")
 
 if(violations)
   message(FATAL_ERROR "dependency rules broken:${violations}")

@@ -6,18 +6,18 @@
 #include "lookahead/exploration/mission_config.hpp"
 #include "lookahead/exploration/study_config.hpp"
 #include "lookahead/exploration/study_keys.hpp"
-#include "lookahead/predictor/pslam_config.hpp"
-#include "lookahead/slam/config/segslam_config.hpp"
-#include "lookahead/slam/config/slam3d_config.hpp"
+#include "lookahead/pipeline/pslam_config.hpp"
 #include "lookahead/slam/hybrid/hybrid_config.hpp"
+#include "lookahead/slam/rbpf3d/slam3d_config.hpp"
+#include "lookahead/slam/segslam/segslam_config.hpp"
 
 namespace lookahead::app {
 
 const std::vector<ConfigSection>& config_sections() {
   static const std::vector<ConfigSection> sections{
       {"slam", "`lookahead slam LOG --config FILE`: the 2D RBPF and P-SLAM on a log",
-       [] { return predictor::dump_pslam_options({}); },
-       [](const std::string& f) { predictor::load_pslam_options(f); }},
+       [] { return pipeline::dump_pslam_options({}); },
+       [](const std::string& f) { pipeline::load_pslam_options(f); }},
       {"segslam", "`lookahead slam LOG --method segslam --segslam-config FILE`: SegSLAM 2D",
        [] {
          return "# lookahead segslam defaults (lookahead config dump segslam)\n" +

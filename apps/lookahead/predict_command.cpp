@@ -7,12 +7,12 @@
 
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "commands.hpp"
+#include "lookahead/pipeline/pslam_config.hpp"
 #include "lookahead/predictor/prediction_picture.hpp"
-#include "lookahead/predictor/pslam_config.hpp"
 #include "lookahead/predictor/structure_predictor.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
@@ -28,7 +28,7 @@ struct PredictArgs {
 };
 
 predictor::PredictorOptions options_of(const PredictArgs& a) {
-  predictor::PredictorOptions o = predictor::load_pslam_options(a.config).prediction.predictor;
+  predictor::PredictorOptions o = pipeline::load_pslam_options(a.config).prediction.predictor;
   if (a.diameter) o.surroundings_diameter = *a.diameter;
   if (a.threshold) o.similarity_threshold = *a.threshold;
   if (a.control_range) o.control_point_range = *a.control_range;

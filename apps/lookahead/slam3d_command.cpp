@@ -12,15 +12,15 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "run_json.hpp"
-#include "lookahead/slam/config/slam3d_config.hpp"
 #include "lookahead/slam/eval/octree_map_entropy.hpp"
 #include "lookahead/slam/io/map_picture.hpp"
 #include "lookahead/slam/octree/octree_io.hpp"
 #include "lookahead/slam/octree/octree_top_view.hpp"
 #include "lookahead/slam/rbpf3d/rbpf3d.hpp"
+#include "lookahead/slam/rbpf3d/slam3d_config.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "run_json.hpp"
 #include "slam3d_segslam.hpp"
 
 namespace lookahead::app {

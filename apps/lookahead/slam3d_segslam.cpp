@@ -9,12 +9,12 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "lookahead/slam/config/segslam_config.hpp"
+#include "lookahead/slam/eval/absolute_error.hpp"
 #include "lookahead/slam/octree/octree_io.hpp"
 #include "lookahead/slam/octree/octree_top_view.hpp"
-#include "lookahead/slam/eval/absolute_error.hpp"
 #include "lookahead/slam/segslam/octree_map_samples.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
+#include "lookahead/slam/segslam/segslam_config.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
 #include "run_json.hpp"

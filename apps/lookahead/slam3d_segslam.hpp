@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "lookahead/slam/config/slam3d_config.hpp"
+#include "lookahead/slam/rbpf3d/slam3d_config.hpp"
 #include "lookahead/slam/sensor/range_sweep.hpp"
 
 namespace lookahead::app {

@@ -10,10 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "run_json.hpp"
-#include "lookahead/predictor/pslam_config.hpp"
-#include "lookahead/predictor/slam_lookahead.hpp"
-#include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/pipeline/pslam_config.hpp"
+#include "lookahead/pipeline/slam_lookahead.hpp"
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
@@ -23,8 +21,10 @@
 #include "lookahead/slam/io/tum_trajectory.hpp"
 #include "log_input.hpp"
 #include "lookahead/slam/rbpf/rbpf.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
+#include "run_json.hpp"
 #include "slam_hybrid.hpp"
 #include "slam_segslam.hpp"
 
@@ -52,8 +52,8 @@ struct SlamArgs {
 };
 
 // The RBPF's and the predictor's options of --config, with the command line's overrides.
-predictor::PslamOptions options_from(const SlamArgs& a) {
-  predictor::PslamOptions file = predictor::load_pslam_options(a.config);
+pipeline::PslamOptions options_from(const SlamArgs& a) {
+  pipeline::PslamOptions file = pipeline::load_pslam_options(a.config);
   slam::RbpfOptions& o = file.rbpf;
   if (a.particles >= 0) o.particles = a.particles;
   if (a.seed >= 0) o.seed = static_cast<std::uint64_t>(a.seed);
@@ -62,23 +62,29 @@ predictor::PslamOptions options_from(const SlamArgs& a) {
   return file;
 }
 
-nlohmann::json prediction_json(const slam::RbpfStatistics& st, const predictor::SlamLookaheadStatistics& p,
-                               const predictor::LogPredictionOptions& options) {
+nlohmann::json prediction_json(const slam::RbpfStatistics& st,
+                               const pipeline::SlamLookaheadStatistics& p,
+                               const pipeline::LogPredictionOptions& options) {
   nlohmann::json records = nlohmann::json::array();
   for (const auto& r : p.records) {
     records.push_back({{"update", r.update}, {"x", r.x}, {"y", r.y}, {"status", predictor::to_string(r.status)},
                        {"psi", r.psi}, {"conflict_share", r.conflict_share}, {"predicted_area_m2", r.predicted_area}});
   }
-  return {{"requests", p.requests}, {"hypotheses", p.hypotheses}, {"no_control_point", p.no_control_point},
-          {"no_match", p.no_match}, {"prediction_wall_time_s", p.seconds},
-          {"predicted_updates", st.predicted_updates}, {"used", st.prediction_used},
-          {"rejected_by_hit_ratio", st.prediction_rejected}, {"records", records},
-          {"options_yaml", predictor::dump_log_prediction_options(options)}};
+  return {{"requests", p.requests},
+          {"hypotheses", p.hypotheses},
+          {"no_control_point", p.no_control_point},
+          {"no_match", p.no_match},
+          {"prediction_wall_time_s", p.seconds},
+          {"predicted_updates", st.predicted_updates},
+          {"used", st.prediction_used},
+          {"rejected_by_hit_ratio", st.prediction_rejected},
+          {"records", records},
+          {"options_yaml", pipeline::dump_log_prediction_options(options)}};
 }
 
 // With --predict, map.png marks every prediction's target by what became of it (in the
 // map frame of the best particle when it was made).
-std::vector<slam::PicturePoints> prediction_targets(const predictor::SlamLookaheadStatistics& p) {
+std::vector<slam::PicturePoints> prediction_targets(const pipeline::SlamLookaheadStatistics& p) {
   slam::PicturePoints made{{}, {30, 80, 220}, "prediction target: hypothesis made", 6};
   slam::PicturePoints no_match{{}, {240, 150, 0}, "... no match above the threshold", 4};
   slam::PicturePoints no_corner{{}, {150, 150, 150}, "... no control point", 3};
@@ -91,8 +97,8 @@ std::vector<slam::PicturePoints> prediction_targets(const predictor::SlamLookahe
 }
 
 void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbpf& filter,
-                   double wall_s, const predictor::SlamLookahead* lookahead,
-                   const predictor::LogPredictionOptions& prediction) {
+                   double wall_s, const pipeline::SlamLookahead* lookahead,
+                   const pipeline::LogPredictionOptions& prediction) {
   std::filesystem::create_directories(a.out);
   const auto& best = filter.particles()[filter.best_particle()];
   const slam::ProbabilityMap map = slam::to_probability_map(best.map);
@@ -137,12 +143,14 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   j["map_observed_cells"] = h.observed;
   if (lookahead) j["prediction"] = prediction_json(st, lookahead->statistics(), prediction);
   write_run_json(a.out, j, filter.options().threads,
-                 slam::dump_rbpf_options(filter.options()) + predictor::dump_log_prediction_options(prediction));
+                 slam::dump_rbpf_options(filter.options()) +
+                     pipeline::dump_log_prediction_options(prediction));
 }
 
 int run_slam(const SlamArgs& a) {
   // --config is a HybridSLAM YAML with --method hybrid, read in run_slam_hybrid.
-  const predictor::PslamOptions file = a.method == "hybrid" ? predictor::PslamOptions{} : options_from(a);
+  const pipeline::PslamOptions file =
+      a.method == "hybrid" ? pipeline::PslamOptions{} : options_from(a);
   const slam::RbpfOptions& options = file.rbpf;
   slam::LogReadOptions read;
   read.skip_bad_lines = a.skip_bad_lines;
@@ -153,10 +161,10 @@ int run_slam(const SlamArgs& a) {
                log.scans.front().ranges.size(), options.particles);
   slam::Rbpf filter(options);
   // P-SLAM: predictions of the region ahead enter the weights (off: plain RBPF, bit for bit).
-  const predictor::LogPredictionOptions& prediction = file.prediction;
-  std::unique_ptr<predictor::SlamLookahead> lookahead;
+  const pipeline::LogPredictionOptions& prediction = file.prediction;
+  std::unique_ptr<pipeline::SlamLookahead> lookahead;
   if (options.prediction.enabled) {
-    lookahead = std::make_unique<predictor::SlamLookahead>(prediction.predictor, prediction.targets);
+    lookahead = std::make_unique<pipeline::SlamLookahead>(prediction.predictor, prediction.targets);
   }
   ProgressBar bar("slam", log.scans.size());
   const auto start = std::chrono::steady_clock::now();

@@ -8,9 +8,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "lookahead/slam/config/segslam_config.hpp"
-#include "lookahead/predictor/pslam_config.hpp"
-#include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/slam/segslam/segslam_config.hpp"
+#include "lookahead/pipeline/pslam_config.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
 #include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
@@ -75,7 +75,7 @@ nlohmann::json statistics_json(const SegSlam& filter) {
 }  // namespace
 
 int run_segslam(const SegSlamArgs& a) {
-  slam::RbpfOptions rbpf = predictor::load_pslam_options(a.config).rbpf;
+  slam::RbpfOptions rbpf = pipeline::load_pslam_options(a.config).rbpf;
   if (a.particles >= 0) rbpf.particles = a.particles;
   if (a.seed >= 0) rbpf.seed = static_cast<std::uint64_t>(a.seed);
   if (a.threads >= 0) rbpf.threads = a.threads;

@@ -4,7 +4,6 @@
 // odometry): ray-cast insertion, likelihood-field evaluation, map copy; plus our scan
 // matcher and improved proposal. Run with --benchmark_repetitions=5 and read the medians.
 #include <benchmark/benchmark.h>
-
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose3D.h>
@@ -12,10 +11,10 @@
 #include <cmath>
 #include <random>
 
-#include "lookahead/slam/grid/scan_inserter.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/rbpf/improved_proposal.hpp"
 #include "lookahead/slam/rbpf/scan_matcher.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace {
 

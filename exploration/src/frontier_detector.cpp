@@ -16,72 +16,34 @@ namespace {
 // seen region: the band a single grazing beam leaves is one or two cells wide.
 constexpr int kUndecidedBand = 2;
 
-// The first fixed-point log-odds whose probability reaches p. Comparing raw log-odds against
-// it reads exactly the decisions of OccupancyGrid::probability() without an exp() per cell
-// (exp was a seventh of a mission's time on large plans).
-int first_log_odds_reaching(double p) {
-  const auto probability = [](int l) {
-    return 1.0 / (1.0 + std::exp(-static_cast<double>(l) / slam::GridTile::kLogOddsScale));
-  };
-  int l = static_cast<int>(std::lround(std::log(p / (1.0 - p)) * slam::GridTile::kLogOddsScale));
-  while (probability(l) >= p) --l;
-  while (probability(l) < p) ++l;
-  return l;
-}
-}  // namespace
-
-FrontierDetector::FrontierDetector(const FrontierOptions& options) : options_(options) {
+const FrontierOptions& checked(const FrontierOptions& options) {
   if (!(options.free_threshold > 0 && options.free_threshold < 0.5) ||
       !(options.occupied_threshold > 0.5 && options.occupied_threshold < 1) ||
       options.min_cluster_cells < 1 || options.robot_radius < 0 || options.goal_search_radius < 0 ||
       options.cluster_gap < 1 || options.cluster_gap > 5) {
     throw std::invalid_argument("frontier options out of range");
   }
-  free_from_ = first_log_odds_reaching(options.free_threshold);
-  occupied_from_ = first_log_odds_reaching(options.occupied_threshold);
+  return options;
 }
+}  // namespace
+
+// Frontier cells as the mission needs them: undecided cells at the edge of the seen region
+// count as unexplored, and the unseen inside of a wall is no frontier.
+FrontierDetector::FrontierDetector(const FrontierOptions& options)
+    : options_(checked(options)),
+      cell_test_(slam::FrontierCellRule{options.free_threshold, options.occupied_threshold,
+                                        kUndecidedBand, true}) {}
 
 bool FrontierDetector::is_free(const slam::OccupancyGrid& grid, CellIndex c) const {
-  const int l = grid.raw_log_odds(c);
-  return l != slam::GridTile::kUnknown && l < free_from_;
+  return cell_test_.is_free(grid, c);
 }
 
 bool FrontierDetector::is_occupied(const slam::OccupancyGrid& grid, CellIndex c) const {
-  const int l = grid.raw_log_odds(c);
-  return l != slam::GridTile::kUnknown && l >= occupied_from_;
+  return cell_test_.is_occupied(grid, c);
 }
 
 bool FrontierDetector::is_frontier(const slam::OccupancyGrid& grid, CellIndex c) const {
-  if (!is_free(grid, c)) return false;
-  // 4-neighbourhood: a diagonal unknown cell alone is a gap between beams, not a way out.
-  // Unexplored is neither free nor occupied: a cell one grazing beam crossed is known but
-  // undecided, and at the edge of the seen region such cells form a band between the free
-  // and the never-seen cells. Counting only never-seen cells hid that frontier (the door
-  // to the lower wing of kth_50025630, seen from afar: the mission ended trapped at 90.7 %).
-  // Only a band that reaches never-seen space counts: an undecided cell deep in the known
-  // map is a blurred wall edge (SLAM pose noise), and counting it scattered frontier specks
-  // along every wall of the office (63 % coverage at the time limit instead of 95 %).
-  const auto unexplored = [&](CellIndex n) {
-    const int l = grid.raw_log_odds(n);
-    if (l == slam::GridTile::kUnknown) return true;
-    if (l < free_from_ || l >= occupied_from_) return false;
-    for (int dy = -kUndecidedBand; dy <= kUndecidedBand; ++dy)
-      for (int dx = -kUndecidedBand; dx <= kUndecidedBand; ++dx)
-        if (!grid.is_known({n.x + dx, n.y + dy})) return true;
-    return false;
-  };
-  const bool borders_unknown = unexplored({c.x + 1, c.y}) || unexplored({c.x - 1, c.y}) ||
-                               unexplored({c.x, c.y + 1}) || unexplored({c.x, c.y - 1});
-  if (!borders_unknown) return false;
-  // A free cell that touches a wall and unknown space is the unseen inside of that wall
-  // (beams graze a wall and leave gaps between its hits), not a way into new space: going
-  // there can never clear it.
-  for (int dy = -1; dy <= 1; ++dy) {
-    for (int dx = -1; dx <= 1; ++dx) {
-      if (is_occupied(grid, {c.x + dx, c.y + dy})) return false;
-    }
-  }
-  return true;
+  return cell_test_.is_frontier(grid, c);
 }
 
 void FrontierDetector::update(const slam::OccupancyGrid& grid, CellIndex min, CellIndex max) {

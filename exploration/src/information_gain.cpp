@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::exploration {
 namespace {

@@ -11,7 +11,7 @@
 #include "lookahead/exploration/prediction_targets.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/exploration/world_source.hpp"
-#include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::exploration {
 

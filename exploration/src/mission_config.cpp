@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include "lookahead/predictor/predictor_keys.hpp"
-#include "lookahead/slam/config/slam_config.hpp"
 #include "lookahead/slam/config/yaml_sections.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
 
 namespace lookahead::exploration {
 namespace {

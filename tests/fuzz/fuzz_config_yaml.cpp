@@ -6,8 +6,8 @@
 
 #include "lookahead/exploration/mission_config.hpp"
 #include "lookahead/exploration/study_config.hpp"
-#include "lookahead/slam/config/segslam_config.hpp"
-#include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/slam/segslam/segslam_config.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
 #include "lookahead/slam/grid/occupancy_grid.hpp"
 #include "lookahead/slam/io/image_header.hpp"
 #include "lookahead/slam/io/map_io.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 #include <gtest/gtest.h>
 

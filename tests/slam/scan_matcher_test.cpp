@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "lookahead/slam/grid/scan_inserter.hpp"
 #include "lookahead/slam/rbpf/improved_proposal.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 #include "test_world.hpp"
 
 namespace lookahead::slam {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/config/slam_config.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
 
 #include <gtest/gtest.h>
 

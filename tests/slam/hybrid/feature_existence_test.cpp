@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "lookahead/slam/hybrid/correspondence_vote.hpp"
+#include "correspondence_vote.hpp"
 
 namespace lookahead::slam::hybrid {
 namespace {

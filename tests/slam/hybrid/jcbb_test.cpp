@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/hybrid/jcbb.hpp"
+#include "jcbb.hpp"
 
 #include <gtest/gtest.h>
 

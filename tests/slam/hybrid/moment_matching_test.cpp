@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/hybrid/moment_matching.hpp"
+#include "moment_matching.hpp"
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "lookahead/slam/config/slam3d_config.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "lookahead/slam/rbpf3d/slam3d_config.hpp"
 #include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
 
 namespace lookahead::slam {

@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "../test_world.hpp"
-#include "lookahead/slam/grid/scan_inserter.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

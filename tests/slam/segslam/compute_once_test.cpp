@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/segslam/compute_once.hpp"
+#include "compute_once.hpp"
 
 #include <gtest/gtest.h>
 

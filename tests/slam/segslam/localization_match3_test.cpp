@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Eq. 19 in 3D: the localisation particle filter that matches a look-ahead window to a
 // candidate submap (localization_match3.hpp), on the simulated garage drive.
-#include "lookahead/slam/segslam/localization_match3.hpp"
+#include "localization_match3.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 
 #include "garage_drive.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "submap_choice.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

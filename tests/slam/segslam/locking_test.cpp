@@ -10,11 +10,11 @@
 #include <utility>
 
 #include "../test_world.hpp"
-#include "lookahead/slam/grid/scan_inserter.hpp"
 #include "lookahead/slam/segslam/grid_submap_ops.hpp"
 #include "lookahead/slam/segslam/seg_map.hpp"
 #include "lookahead/slam/segslam/seg_slam.hpp"
-#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
+#include "trajectory_reconstruction.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

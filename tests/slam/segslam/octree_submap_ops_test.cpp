@@ -8,12 +8,12 @@
 #include <algorithm>
 #include <random>
 
-#include "lookahead/slam/octree/ray_insertion.hpp"
-#include "lookahead/slam/segslam/candidate_reach.hpp"
-#include "lookahead/slam/segslam/seg_slam3d.hpp"
-#include "lookahead/slam/segslam/submap_choice.hpp"
-#include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
+#include "candidate_reach.hpp"
 #include "garage_drive.hpp"
+#include "lookahead/slam/octree/ray_insertion.hpp"
+#include "lookahead/slam/segslam/seg_slam3d.hpp"
+#include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
+#include "submap_choice.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

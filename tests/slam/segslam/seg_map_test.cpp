@@ -6,7 +6,7 @@
 
 #include "lookahead/slam/geometry/pose2.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
-#include "lookahead/slam/segslam/trajectory_reconstruction.hpp"
+#include "trajectory_reconstruction.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

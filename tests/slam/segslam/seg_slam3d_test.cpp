@@ -9,10 +9,10 @@
 #include <random>
 #include <sstream>
 
-#include "lookahead/slam/config/segslam_config.hpp"
-#include "lookahead/slam/segslam/octree_map_samples.hpp"
-#include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
 #include "garage_drive.hpp"
+#include "lookahead/slam/segslam/octree_map_samples.hpp"
+#include "lookahead/slam/segslam/segslam_config.hpp"
+#include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

@@ -10,10 +10,10 @@
 #include <random>
 
 #include "../test_world.hpp"
-#include "lookahead/slam/grid/scan_inserter.hpp"
-#include "lookahead/slam/segslam/candidate_reach.hpp"
+#include "candidate_reach.hpp"
 #include "lookahead/slam/segslam/min_entropy_search.hpp"
 #include "lookahead/slam/sensor/likelihood_field_model.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

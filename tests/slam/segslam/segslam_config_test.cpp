@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/config/segslam_config.hpp"
+#include "lookahead/slam/segslam/segslam_config.hpp"
 
 #include <gtest/gtest.h>
 

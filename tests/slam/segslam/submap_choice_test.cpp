@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/segslam/submap_choice.hpp"
+#include "submap_choice.hpp"
 
 #include <gtest/gtest.h>
 
-#include "lookahead/slam/segslam/segmentation.hpp"
+#include "segmentation.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

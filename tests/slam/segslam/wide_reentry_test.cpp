@@ -7,12 +7,12 @@
 
 #include <cmath>
 
+#include "candidate_reach.hpp"
+#include "garage_drive.hpp"
 #include "lookahead/slam/octree/ray_insertion.hpp"
-#include "lookahead/slam/segslam/candidate_reach.hpp"
 #include "lookahead/slam/segslam/level_coarse_search.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "lookahead/slam/sim3d/cave_crawler_sim.hpp"
-#include "garage_drive.hpp"
 
 namespace lookahead::slam::segslam {
 namespace {

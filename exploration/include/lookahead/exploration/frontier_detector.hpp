@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "lookahead/slam/grid/cell_index.hpp"
+#include "lookahead/slam/grid/frontier_cell.hpp"
 #include "lookahead/slam/grid/occupancy_grid.hpp"
 
 namespace lookahead::exploration {
@@ -71,8 +72,7 @@ class FrontierDetector {
   bool is_occupied(const slam::OccupancyGrid& grid, slam::CellIndex c) const;
 
   FrontierOptions options_;
-  // The thresholds as fixed-point log-odds: the first value whose probability reaches each.
-  int free_from_ = 0, occupied_from_ = 0;
+  slam::FrontierCellTest cell_test_;
   std::unordered_set<slam::CellIndex, CellHash> cells_;
   std::unordered_set<slam::CellIndex, CellHash> retired_;
 };

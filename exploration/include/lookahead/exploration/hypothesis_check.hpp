@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "lookahead/exploration/world.hpp"
-#include "lookahead/slam/rbpf/hypothesis.hpp"
+#include "lookahead/slam/grid/hypothesis.hpp"
 
 namespace lookahead::exploration {
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "lookahead/exploration/frontier_detector.hpp"
+#include "lookahead/slam/grid/hypothesis.hpp"
 #include "lookahead/slam/grid/occupancy_grid.hpp"
-#include "lookahead/slam/rbpf/hypothesis.hpp"
 
 namespace lookahead::exploration {
 

@@ -15,7 +15,7 @@
 #include "lookahead/predictor/registration.hpp"
 #include "lookahead/predictor/similarity.hpp"
 #include "lookahead/predictor/unexplored_region.hpp"
-#include "lookahead/slam/rbpf/hypothesis.hpp"
+#include "lookahead/slam/grid/hypothesis.hpp"
 
 namespace lookahead::predictor {
 
