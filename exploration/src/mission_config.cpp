@@ -21,7 +21,9 @@ namespace {
 template <typename V>
 void visit_robot_sections(MissionOptions& o, V&& v) {
   v.section("mission");
-  v("strategy", o.strategy, "target selection: nearest | utility | predictive | predictive-utility");
+  v("strategy", o.strategy,
+    "target selection: nearest | utility | advantage | predictive | predictive-utility | "
+    "predictive-advantage");
   v("utility_lambda", o.utility_lambda, "utility = gain [m^2] - lambda * cost [m]");
   v("gain_line_of_sight", o.gain_line_of_sight, "gain: unknown area in line of sight (false: the whole disc)");
   v("pose_source", o.pose_source, "slam (RBPF in the loop) | truth (map at the true pose)");

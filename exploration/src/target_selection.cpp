@@ -214,13 +214,13 @@ Selection select_target(const SelectionInputs& in) {
   s.outcome = candidates.empty() ? SelectionOutcome::kUnreachable : SelectionOutcome::kPlanFailed;
   s.waiting_on_blacklist = candidates.empty() && any_waiting;
   for (int attempt = 0; attempt < in.max_attempts && !candidates.empty(); ++attempt) {
-    const auto pick = in.strategy->choose(candidates);
+    auto pick = in.strategy->choose(candidates);
     if (!pick) {
-      if (attempt == 0) {  // every frontier left is predicted: look-ahead mapping is done
-        s.outcome = SelectionOutcome::kNoFrontier;
-        s.rest_predicted = true;
-      }
-      break;
+      // Every frontier left is predicted. An unobserved prediction is not a map: the robot
+      // visits them, and the time this first happened ends P-SLAM's protocol (sec. V-A.1).
+      s.rest_predicted = true;
+      pick = in.strategy->choose_any(candidates);
+      if (!pick) break;
     }
     const FrontierCluster& target = *candidates[*pick].cluster;
     if (in.predicted && in.strategy->uses_prediction()) log_predicted_shares(in, candidates, *pick);

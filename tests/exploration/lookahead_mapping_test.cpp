@@ -303,7 +303,8 @@ TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
   cands[2].predicted_share = 0.9;
   EXPECT_EQ(s.choose(cands), std::optional<std::size_t>(1));
   cands[1].predicted_share = 1.0;
-  EXPECT_FALSE(s.choose(cands).has_value());  // everything predicted: nothing to drive to
+  EXPECT_FALSE(s.choose(cands).has_value());  // everything predicted: nothing left to skip to
+  EXPECT_EQ(s.choose_any(cands), std::optional<std::size_t>(0));  // ... so the nearest is observed
   EXPECT_TRUE(s.uses_prediction());
   EXPECT_EQ(s.name(), "predictive");
   EXPECT_EQ(make_strategy("predictive-utility")->name(), "predictive-utility");

@@ -24,7 +24,8 @@ enum class PoseSource {
 };
 
 struct MissionOptions {
-  std::string strategy = "nearest";  ///< target selection: nearest | utility | predictive
+  std::string strategy = "nearest";  ///< target selection: nearest | utility | advantage |
+                                     ///< predictive[-utility|-advantage]
   double utility_lambda = 1.0;       ///< utility = gain [m^2] - lambda * cost [m]
   /// The gain counts only unknown area in line of sight of the goal (walls occlude); false:
   /// the whole disc within sensor range, space behind outer walls included.
