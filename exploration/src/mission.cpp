@@ -145,11 +145,6 @@ void Mission::deliver_prediction() {
   if (rbpf_) rbpf_->add_hypothesis(std::move(h));  // ignored unless prediction is on
 }
 
-GoalDistance Mission::prediction_order(const std::vector<FrontierCluster>& clusters) const {
-  if (!options_.lookahead.targets_by_path) return straight_line_from(estimate());
-  return path_cost_from(costmap_, estimate(), clusters);
-}
-
 SkipRule Mission::skip_rule() const {
   SkipRule rule = options_.lookahead.skip_rule();
   rule.free = options_.free_threshold;  // undecided cells, for wall slivers: as the frontier detector reads them
@@ -169,8 +164,9 @@ SkipRule Mission::skip_rule() const {
 
 std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x, double goal_y) {
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(map());
-  const TargetList targets = selection_targets(clusters, goal_x, goal_y, prediction_order(clusters),
-                                               options_.lookahead.targets_per_selection);
+  const TargetList targets =
+      selection_targets(clusters, goal_x, goal_y, straight_line_from(estimate()),
+                        options_.lookahead.targets_per_selection);
   for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
   return targets;
 }
@@ -184,7 +180,8 @@ void Mission::predict_while_idle() {
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(m);
   const TargetList targets = unpredicted_frontier_targets(
       clusters, m, lookahead_->predicted(), skip_rule(), options_.lookahead.skip_share,
-      predicted_targets_, time_, prediction_order(clusters), options_.lookahead.targets_per_selection);
+      predicted_targets_, time_, straight_line_from(estimate()),
+      options_.lookahead.targets_per_selection);
   if (targets.empty()) return;
   for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
   lookahead_->request(m, targets, time_);

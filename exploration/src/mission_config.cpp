@@ -68,18 +68,19 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
   v.section("lookahead");
   v("enabled", o.enabled, "predict at each new target (on with --predict or strategy predictive)");
   v("latency", o.latency, "a prediction is delivered this long after its request [s, simulated]");
-  v("skip_confidence", o.skip_confidence, "predictive strategy: hypotheses with Psi >= this may be skipped");
-  v("skip_share", o.skip_share, "... skip a frontier when this share of its far side is predicted");
-  v("skip_predicted_targets", o.skip_predicted_targets, "... or when its goal got a hypothesis itself");
-  v("skip_region_radius", o.skip_region_radius, "> 0: ... instead when its region within this is predicted [m]");
-  v("neighbours_last", o.neighbours_last, "... and choose frontiers whose region is partly predicted last");
+  v("skip", o.skip,
+    "predictive strategies skip a frontier when: region (its region is predicted) | far_side (its "
+    "far side is)");
+  v("skip_confidence", o.skip_confidence, "... counting hypotheses with Psi >= this");
+  v("skip_share", o.skip_share, "far_side: ... this share of its far side is predicted");
+  v("skip_region_radius", o.skip_region_radius,
+    "region: ... its region within this is predicted [m], > 0");
   v("skip_region_wall_gap", o.skip_region_wall_gap, "... a wall's unknown gaps up to this wide (and the robot's diameter) close the region [m]");
   v("known_boundary", o.known_boundary, "... and no region reaches beyond the world's extent (Fig. 7(d))");
   v("skip_wall_slivers", o.skip_wall_slivers, "... and skip frontiers whose region is a closed pocket of min_predicted_area");
   v("targets_per_selection", o.targets_per_selection, "frontiers predicted per selection: the target, then the nearest");
   v("predict_while_idle", o.predict_while_idle, "an idle predictor predicts the nearest frontiers not covered yet");
   v("repredict_after", o.repredict_after, "... a frontier again after this long [s, simulated]");
-  v("targets_by_path", o.targets_by_path, "predicted targets nearest by path cost, as nearest chooses (false: straight line)");
   v("pictures", o.pictures,
     "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");
   predictor::visit_predictor_keys(o.predictor, v);
@@ -131,7 +132,17 @@ std::optional<planner::PlannerAlgorithm> algorithm_from_name(const std::string& 
 
 using slam::config::fail_at;
 
-// The shared section loader and dumper, plus this library's two enums.
+const char* skip_variant_name(SkipVariant v) {
+  return v == SkipVariant::kRegion ? "region" : "far_side";
+}
+
+std::optional<SkipVariant> skip_variant_from_name(const std::string& name) {
+  if (name == "region") return SkipVariant::kRegion;
+  if (name == "far_side") return SkipVariant::kFarSide;
+  return std::nullopt;
+}
+
+// The shared section loader and dumper, plus this library's three enums.
 class Loader : public slam::config::SectionLoader {
  public:
   using SectionLoader::SectionLoader;
@@ -141,6 +152,14 @@ class Loader : public slam::config::SectionLoader {
     if (!n) return;
     const auto v = pose_source_from_name(n.IsScalar() ? n.Scalar() : "");
     if (!v) fail_at(source(), n, section_name() + "." + key, "bad value: expected slam | truth");
+    field = *v;
+  }
+  void operator()(const char* key, SkipVariant& field, const char*) {
+    const YAML::Node n = node(key);
+    if (!n) return;
+    const auto v = skip_variant_from_name(n.IsScalar() ? n.Scalar() : "");
+    if (!v)
+      fail_at(source(), n, section_name() + "." + key, "bad value: expected region | far_side");
     field = *v;
   }
   void operator()(const char* key, planner::PlannerAlgorithm& field, const char*) {
@@ -158,6 +177,9 @@ class Dumper : public slam::config::SectionDumper {
  public:
   using SectionDumper::operator();
   void operator()(const char* key, PoseSource field, const char* doc) { line(key, pose_source_name(field), doc); }
+  void operator()(const char* key, SkipVariant field, const char* doc) {
+    line(key, skip_variant_name(field), doc);
+  }
   void operator()(const char* key, planner::PlannerAlgorithm field, const char* doc) {
     line(key, planner::to_string(field), doc);
   }

@@ -119,14 +119,7 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
       const PredictedMap& pm = *in.predicted;
       const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
       Candidate c{&f, d, gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known), 0.0};
-      if (in.skip.region_radius > 0) {
-        // One flood fill of the frontier's region for every verdict of the region rule.
-        const RegionArea a = pm.region_area(*in.map, f, in.skip);
-        c.predicted_share = left_out(a, in.skip) ? 1.0 : 0.0;
-        c.borders_prediction = in.skip.neighbours_last && a.partly_predicted(in.skip.region_tolerance);
-      } else {
-        c.predicted_share = pm.covered_share(*in.map, f, in.skip);
-      }
+      c.predicted_share = pm.covered_share(*in.map, f, in.skip);
       out.push_back(c);
       continue;
     }
@@ -148,7 +141,7 @@ void log_predicted_shares(const SelectionInputs& in, const std::vector<Candidate
                 "{} of {} frontiers fully predicted, {} partly",
                 c.cluster->cells.size(), c.cluster->goal_x, c.cluster->goal_y, 100 * c.predicted_share,
                 c.information_gain, skipped, candidates.size(), partly);
-  if (in.skip.region_radius <= 0 || !spdlog::should_log(spdlog::level::debug)) return;
+  if (in.skip.variant != SkipVariant::kRegion || !spdlog::should_log(spdlog::level::debug)) return;
   const RegionArea a = in.predicted->region_area(*in.map, *c.cluster, in.skip);
   spdlog::debug("look-ahead: its region: {:.1f} m^2 predicted, {:.1f} m^2 not", a.predicted, a.unpredicted);
 }

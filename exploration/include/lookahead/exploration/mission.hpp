@@ -100,8 +100,6 @@ class Mission {
   void deliver_prediction();
   std::vector<std::pair<double, double>> prediction_targets(double goal_x, double goal_y);
   void predict_while_idle();  ///< LookaheadOptions::predict_while_idle
-  /// Which frontier goals are nearest for the prediction targets (LookaheadOptions::targets_by_path).
-  [[nodiscard]] GoalDistance prediction_order(const std::vector<FrontierCluster>& clusters) const;
   void refresh();
   void decide();
   bool need_new_path();

@@ -21,9 +21,6 @@ struct Candidate {
   /// Share of the unknown cells beyond the frontier that confident hypotheses predict
   /// (priced only for strategies that use predictions).
   double predicted_share = 0.0;
-  /// Part of its unexplored region is predicted, part not (priced only under
-  /// SkipRule::neighbours_last): the predictive strategy takes such frontiers last.
-  bool borders_prediction = false;
 };
 
 class TargetStrategy {
