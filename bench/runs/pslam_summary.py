@@ -28,12 +28,22 @@ def welch(a, b):
     inner = dens(0) + dens(hi) + sum((4 if i % 2 else 2) * dens(i * h) for i in range(1, n))
     return t, max(0.0, 1 - 2 * inner * h / 3)
 
+def skip_protocol(r):
+    """A run under P-SLAM's protocol (sec. V-A.1): a predictive mission's time and path end
+    where every frontier left was predicted or explored-or-correctly-predicted reached the
+    goal (the mission itself goes on until the area is explored)."""
+    p = r.get('prediction', {})
+    if p.get('skip_protocol_end_s') is not None and r['strategy'].startswith('predictive'):
+        r = dict(r, simulated_time_s=p['skip_protocol_end_s'], path_length_m=p['path_at_skip_end_m'],
+                 coverage_with_predictions=p['coverage_with_predictions_at_skip_end'])
+    return r
+
 def load(folder):
     runs = defaultdict(list)
     for root, _, files in os.walk(folder):
         if 'run.json' in files and not root.endswith('.partial'):
             j = json.load(open(os.path.join(root, 'run.json')))
-            runs[(j['world'], j['strategy'])].append(j)
+            runs[(j['world'], j['strategy'])].append(skip_protocol(j))
     return runs
 
 def pooled(runs):
@@ -65,7 +75,7 @@ def main(folder):
         p = [r['path_length_m'] for r in rs]; paths[world, strategy] = p
         cov = [r['coverage'] for r in rs]
         pr = [r.get('prediction', {}) for r in rs]
-        covp = [x.get('coverage_with_predictions', c) for x, c in zip(pr, cov)]
+        covp = [r.get('coverage_with_predictions', x.get('coverage_with_predictions', c)) for r, x, c in zip(rs, pr, cov)]
         acc = [x['final_predicted_accuracy'] for x in pr if x.get('final_predicted_area_m2', 0) > 0]
         acc_in = [x['final_predicted_accuracy_inside'] for x in pr if x.get('final_predicted_area_inside_m2', 0) > 0]
         acc_all = [x['cell_accuracy'] for x in pr if x.get('hypotheses', 0) > 0]

@@ -55,7 +55,7 @@ std::shared_ptr<const slam::HypothesisMap> LookaheadMapping::deliver(double now)
     r.truth = check_against_world(
         *p->hypothesis, world_, observable_, options_.predictor.features.occupied_threshold, 0.1,
         options_.predictor.similarity_resolution, options_.predictor.similarity_tolerance_cells);
-    predicted_.add(*p->hypothesis, r.x, r.y);
+    predicted_.add(*p->hypothesis);
     if (options_.pictures) snapshots_.push_back({records_.size(), map, *p});
     spdlog::debug("t {:.1f}: hypothesis for ({:.2f}, {:.2f}) Psi {:.2f} ({:.1f} m^2), against the world Psi {:.2f}, "
                   "{:.0f}% cells right", now, r.x, r.y, r.psi, r.area, r.truth.psi, 100 * r.truth.accuracy());

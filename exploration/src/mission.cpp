@@ -150,11 +150,6 @@ void Mission::deliver_prediction() {
   if (rbpf_) rbpf_->add_hypothesis(std::move(h));  // ignored unless prediction is on
 }
 
-GoalDistance Mission::prediction_order(const std::vector<FrontierCluster>& clusters) const {
-  if (!options_.lookahead.targets_by_path) return straight_line_from(estimate());
-  return path_cost_from(costmap_, estimate(), clusters);
-}
-
 SkipRule Mission::skip_rule() const {
   SkipRule rule = options_.lookahead.skip_rule();
   rule.free = options_.free_threshold;  // undecided cells, for wall slivers: as the frontier detector reads them
@@ -174,8 +169,9 @@ SkipRule Mission::skip_rule() const {
 
 std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x, double goal_y) {
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(map());
-  const TargetList targets = selection_targets(clusters, goal_x, goal_y, prediction_order(clusters),
-                                               options_.lookahead.targets_per_selection);
+  const TargetList targets =
+      selection_targets(clusters, goal_x, goal_y, straight_line_from(estimate()),
+                        options_.lookahead.targets_per_selection);
   for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
   return targets;
 }
@@ -189,7 +185,8 @@ void Mission::predict_while_idle() {
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(m);
   const TargetList targets = unpredicted_frontier_targets(
       clusters, m, lookahead_->predicted(), skip_rule(), options_.lookahead.skip_share,
-      predicted_targets_, time_, prediction_order(clusters), options_.lookahead.targets_per_selection);
+      predicted_targets_, time_, straight_line_from(estimate()),
+      options_.lookahead.targets_per_selection);
   if (targets.empty()) return;
   for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
   lookahead_->request(m, targets, time_);
@@ -302,7 +299,8 @@ bool Mission::goal_predicted() const {
   // Look-ahead mapping: a hypothesis delivered on the way (requested for this very target,
   // so it arrives after the choice) may cover the frontier the robot is driving to. The
   // strategy would skip it now; driving on would map what is already predicted.
-  if (!lookahead_ || !goal_ || !strategy_->uses_prediction()) return false;
+  // A goal chosen because every frontier left was predicted is there to observe it.
+  if (!lookahead_ || !goal_ || !strategy_->uses_prediction() || visiting_predicted_) return false;
   const slam::OccupancyGrid& m = map();
   for (const FrontierCluster& f : frontiers_.clusters(m)) {
     if (!f.has_goal || std::hypot(f.goal_x - goal_->x, f.goal_y - goal_->y) > kSameGoalRadius) continue;
@@ -349,6 +347,7 @@ void Mission::select_new_target() {
   path_blocked_ = false;
   backtracking_ = false;
   squeezing_ = false;
+  visiting_predicted_ = false;
   follower_.reset();
   goal_.reset();
   blacklist_.expire(time_);
@@ -368,7 +367,6 @@ void Mission::select_new_target() {
   count(s);
   if (s.outcome == SelectionOutcome::kNoFrontier) {
     status_ = MissionStatus::kDone;
-    stats_.ended_on_predictions = s.rest_predicted;
   } else if (s.outcome != SelectionOutcome::kPlanned) {
     // Maybe only for now: retrace the trail out of here, or turn once more to look around,
     // and give up after three tries (a backtrack that does not lead to a target counts as
@@ -390,6 +388,8 @@ void Mission::select_new_target() {
   } else {
     unreachable_streak_ = 0;
     last_resorts_ = 0;
+    visiting_predicted_ = s.rest_predicted;
+    if (s.rest_predicted && stats_.rest_predicted_time < 0) stats_.rest_predicted_time = time_;
     // P-SLAM predicts the region around the next exploration goal (sec. II-A, step 1).
     if (lookahead_) lookahead_->request(map(), prediction_targets(s.goal_x, s.goal_y), time_);
     follow(s, options_.follower);
@@ -446,11 +446,14 @@ void Mission::record() {
     const double explored = meter_.coverage(map());
     double with_predictions = explored;
     if (lookahead_) {
+      // "Explored or correctly predicted": predicted free cells count where the world is
+      // free. A measure of look-ahead mapping only; no end condition reads it.
       const PredictedMap& pm = lookahead_->predicted();
       const double occupied = options_.lookahead.predictor.features.occupied_threshold;
       with_predictions = meter_.coverage(map(), [&](double x, double y) {
         const slam::CellIndex c = pm.cells().cell_at(x, y);
-        return pm.predicted(map(), c) && pm.cells().probability(c) < occupied;
+        return pm.predicted(map(), c) && pm.cells().probability(c) < occupied &&
+               !world_.is_occupied(x, y);
       });
     }
     curve_.push_back({time_, path_length_, explored, with_predictions});
@@ -459,12 +462,9 @@ void Mission::record() {
 
 void Mission::check_end() {
   if (status_ != MissionStatus::kRunning) return;
-  // Look-ahead mapping (a predictive strategy) counts predicted free space as mapped.
-  const bool predictive = lookahead_ && strategy_->uses_prediction();
-  const double mapped = curve_.empty() ? 0.0
-                        : predictive   ? curve_.back().coverage_with_predictions
-                                       : curve_.back().coverage;
-  if (mapped >= options_.coverage_goal) status_ = MissionStatus::kCoverageReached;
+  // The goal is explored space: a prediction counts once the robot has observed it.
+  if (coverage() >= options_.coverage_goal)
+    status_ = MissionStatus::kCoverageReached;
   else if (time_ >= options_.time_limit) status_ = MissionStatus::kTimeLimit;
 }
 

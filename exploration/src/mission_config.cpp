@@ -21,7 +21,9 @@ namespace {
 template <typename V>
 void visit_robot_sections(MissionOptions& o, V&& v) {
   v.section("mission");
-  v("strategy", o.strategy, "target selection: nearest | utility | predictive | predictive-utility");
+  v("strategy", o.strategy,
+    "target selection: nearest | utility | advantage | predictive | predictive-utility | "
+    "predictive-advantage");
   v("utility_lambda", o.utility_lambda, "utility = gain [m^2] - lambda * cost [m]");
   v("pose_source", o.pose_source, "slam (RBPF in the loop) | truth (map at the true pose)");
   v("seed", o.seed, "seeds the sensor, odometry, SLAM (filter.seed) and planner");
@@ -61,18 +63,19 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
   v.section("lookahead");
   v("enabled", o.enabled, "predict at each new target (on with --predict or strategy predictive)");
   v("latency", o.latency, "a prediction is delivered this long after its request [s, simulated]");
-  v("skip_confidence", o.skip_confidence, "predictive strategy: hypotheses with Psi >= this may be skipped");
-  v("skip_share", o.skip_share, "... skip a frontier when this share of its far side is predicted");
-  v("skip_predicted_targets", o.skip_predicted_targets, "... or when its goal got a hypothesis itself");
-  v("skip_region_radius", o.skip_region_radius, "> 0: ... instead when its region within this is predicted [m]");
-  v("neighbours_last", o.neighbours_last, "... and choose frontiers whose region is partly predicted last");
+  v("skip", o.skip,
+    "predictive strategies skip a frontier when: region (its region is predicted) | far_side (its "
+    "far side is)");
+  v("skip_confidence", o.skip_confidence, "... counting hypotheses with Psi >= this");
+  v("skip_share", o.skip_share, "far_side: ... this share of its far side is predicted");
+  v("skip_region_radius", o.skip_region_radius,
+    "region: ... its region within this is predicted [m], > 0");
   v("skip_region_wall_gap", o.skip_region_wall_gap, "... a wall's unknown gaps up to this wide (and the robot's diameter) close the region [m]");
   v("known_boundary", o.known_boundary, "... and no region reaches beyond the world's extent (Fig. 7(d))");
   v("skip_wall_slivers", o.skip_wall_slivers, "... and skip frontiers whose region is a closed pocket of min_predicted_area");
   v("targets_per_selection", o.targets_per_selection, "frontiers predicted per selection: the target, then the nearest");
   v("predict_while_idle", o.predict_while_idle, "an idle predictor predicts the nearest frontiers not covered yet");
   v("repredict_after", o.repredict_after, "... a frontier again after this long [s, simulated]");
-  v("targets_by_path", o.targets_by_path, "predicted targets nearest by path cost, as nearest chooses (false: straight line)");
   v("pictures", o.pictures,
     "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");
   predictor::visit_predictor_keys(o.predictor, v);

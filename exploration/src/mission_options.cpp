@@ -24,6 +24,7 @@ void look_ahead_as_on_the_maze(LookaheadOptions& l) {
   l.predictor.large_surroundings_diameter = 14.0;
   l.predictor.large_max_conflict_share = 0.05;
   l.predictor.control_point_range = 5.0;
+  l.skip = SkipVariant::kRegion;
   l.skip_region_radius = 7.0;
   l.skip_region_wall_gap = 0.5;
   l.known_boundary = true;
@@ -102,14 +103,12 @@ void MissionOptions::validate() const {
   make_strategy(strategy);  // throws on an unknown name
   require(lookahead.latency >= 0, "lookahead.latency >= 0");
   require(lookahead.targets_per_selection >= 1, "lookahead.targets_per_selection >= 1");
-  require(!lookahead.neighbours_last || lookahead.skip_region_radius > 0,
-          "lookahead.neighbours_last needs lookahead.skip_region_radius > 0");
   require(lookahead.skip_region_wall_gap >= 0, "lookahead.skip_region_wall_gap >= 0");
-  // known_boundary and skip_wall_slivers (on by default) shape the region rule's regions;
-  // the share rule (skip_region_radius 0) has none and ignores them.
+  // known_boundary and skip_wall_slivers (on by default) shape the region variant's
+  // regions; the far-side variant has none and ignores them.
   require(lookahead.repredict_after > 0, "lookahead.repredict_after > 0");
   require(lookahead.skip_confidence >= 0 && lookahead.skip_confidence <= 1, "lookahead.skip_confidence in [0, 1]");
-  require(lookahead.skip_region_radius >= 0, "lookahead.skip_region_radius >= 0");
+  require(lookahead.skip_region_radius > 0, "lookahead.skip_region_radius > 0");
   require(lookahead.skip_share > 0 && lookahead.skip_share <= 1, "lookahead.skip_share in (0, 1]");
   predictor::validate(lookahead.predictor);
   require(time_limit > 0, "time_limit > 0");

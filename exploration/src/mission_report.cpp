@@ -47,6 +47,11 @@ MissionSummary summarize(const Mission& m, const std::string& world_name, double
 
 namespace {
 
+// A time that may never have come (< 0): null in the JSON.
+nlohmann::json optional_time(double t) {
+  return t >= 0 ? nlohmann::json(t) : nlohmann::json(nullptr);
+}
+
 // Each hypothesis with where it came from and how the world scored it (for diagnosis).
 nlohmann::json hypotheses_json(const std::vector<PredictionRecord>& records) {
   nlohmann::json out = nlohmann::json::array();
@@ -91,7 +96,11 @@ nlohmann::json prediction_json(const PredictionSummary& p) {
           {"final_predicted_area_inside_m2", p.final_predicted_area_inside},
           {"final_predicted_accuracy_inside", p.final_predicted_accuracy_inside},
           {"coverage_with_predictions", p.coverage_with_predictions},
-          {"ended_on_predictions", p.ended_on_predictions},
+          {"rest_predicted_s", optional_time(p.rest_predicted_time)},
+          {"time_to_goal_with_predictions_s", optional_time(p.time_to_goal_with_predictions)},
+          {"skip_protocol_end_s", optional_time(p.skip_protocol_end)},
+          {"coverage_with_predictions_at_skip_end", p.coverage_with_predictions_at_skip_end},
+          {"path_at_skip_end_m", p.path_at_skip_end},
           {"filter",
            {{"hypotheses", p.filter_hypotheses},
             {"predicted_updates", p.filter_predicted_updates},

@@ -46,41 +46,17 @@ void PredictedMap::add(const slam::HypothesisMap& h) {
   }
 }
 
-void PredictedMap::add(const slam::HypothesisMap& h, double target_x, double target_y) {
-  add(h);
-  targets_.push_back({target_x, target_y, h.similarity});
-}
-
-bool PredictedMap::target_predicted(double x, double y, double radius, double min_confidence) const {
-  for (const Target& t : targets_)
-    if (t.psi >= min_confidence && std::hypot(t.x - x, t.y - y) <= radius) return true;
-  return false;
-}
-
 double PredictedMap::covered_share(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                    const SkipRule& rule) const {
-  const double min_confidence = rule.min_confidence;
-  if (rule.region_radius > 0 && cluster.has_goal) {
+  if (rule.variant == SkipVariant::kRegion && cluster.has_goal) {
     // Sec. II-B: the robot leaves out a region that is predicted. Its immediate far side
     // alone (predicted_share) says nothing of the unknown further on, which skipping
-    // would leave neither explored nor predicted.
-    // A region no prediction touches is not left out by one: a frontier whose far side was
-    // seen since the frontiers were last found has an empty region (0 m^2 both ways), and
-    // counting it as predicted skipped every frontier of kth_0510034869 at 10.8 s, ending
-    // the mission at 7 % explored (README, reproduction 3).
+    // would leave neither explored nor predicted. A region no prediction touches is not
+    // left out by one (RegionArea::covered): a frontier whose far side was seen since the
+    // frontiers were last found has an empty region.
     return left_out(region_area(map, cluster, rule), rule) ? 1.0 : 0.0;
   }
-  // The frontier cluster's goal stands for the target cell f the predictor was given; the
-  // goal of the same frontier moves a little as the map grows (1 m, as Mission's same goal).
-  if (rule.by_target && cluster.has_goal && target_predicted(cluster.goal_x, cluster.goal_y, 1.0, min_confidence))
-    return 1.0;
-  return predicted_share(map, cluster, min_confidence);
-}
-
-bool PredictedMap::borders_prediction(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
-                                      const SkipRule& rule) const {
-  if (rule.region_radius <= 0 || !cluster.has_goal) return false;
-  return region_area(map, cluster, rule).partly_predicted(rule.region_tolerance);
+  return predicted_share(map, cluster, rule.min_confidence);
 }
 
 RegionArea PredictedMap::region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,

@@ -81,6 +81,24 @@ void summarize_final_map(const Mission& m, const PredictedMap& pm, double occupi
   });
 }
 
+void summarize_skip_protocol(const Mission& m, PredictionSummary& s) {
+  s.rest_predicted_time = m.statistics().rest_predicted_time;
+  const std::vector<CoverageSample>& curve = m.coverage_curve();
+  const auto goal = std::find_if(curve.begin(), curve.end(), [&](const CoverageSample& c) {
+    return c.coverage_with_predictions >= m.options().coverage_goal;
+  });
+  if (goal != curve.end()) s.time_to_goal_with_predictions = goal->time;
+  for (const double t : {s.rest_predicted_time, s.time_to_goal_with_predictions})
+    if (t >= 0 && (s.skip_protocol_end < 0 || t < s.skip_protocol_end)) s.skip_protocol_end = t;
+  if (s.skip_protocol_end < 0) return;
+  const auto end = std::find_if(curve.begin(), curve.end(), [&](const CoverageSample& c) {
+    return c.time >= s.skip_protocol_end;
+  });
+  if (end == curve.end()) return;
+  s.coverage_with_predictions_at_skip_end = end->coverage_with_predictions;
+  s.path_at_skip_end = end->path_length;
+}
+
 }  // namespace
 
 PredictionSummary summarize_predictions(const Mission& m) {
@@ -91,7 +109,7 @@ PredictionSummary summarize_predictions(const Mission& m) {
   s.enabled = true;
   summarize_records(la->records(), s);
   summarize_final_map(m, la->predicted(), la->options().predictor.features.occupied_threshold, s);
-  s.ended_on_predictions = m.statistics().ended_on_predictions;
+  summarize_skip_protocol(m, s);
   if (const slam::Rbpf* f = m.slam()) {
     s.filter_hypotheses = f->statistics().hypotheses_added;
     s.filter_predicted_updates = f->statistics().predicted_updates;

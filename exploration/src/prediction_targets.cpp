@@ -35,24 +35,6 @@ GoalDistance straight_line_from(const slam::Pose2& robot) {
   return [robot](const FrontierCluster& f) { return std::hypot(f.goal_x - robot.x, f.goal_y - robot.y); };
 }
 
-GoalDistance path_cost_from(const planner::Costmap& costmap, const slam::Pose2& robot,
-                            const std::vector<FrontierCluster>& clusters) {
-  // The same start cell and search as select_target's pricing, so that both agree on which
-  // goal is next (the robot may stand in an inflated cell right after a turn near a wall).
-  const std::optional<planner::Point2> start = nearest_free(costmap, robot.x, robot.y, 0.5);
-  if (!start) return [](const FrontierCluster&) { return TravelCost::kInfinity; };
-  std::vector<slam::CellIndex> goals;
-  for (const FrontierCluster& f : clusters)
-    if (f.has_goal) goals.push_back(costmap.cell_at({f.goal_x, f.goal_y}));
-  const slam::CellIndex lo = costmap.origin();
-  const slam::CellIndex hi{lo.x + costmap.width() - 1, lo.y + costmap.height() - 1};
-  const auto cost = std::make_shared<const TravelCost>(
-      lo, hi, costmap.resolution(), costmap.cell_at(*start),
-      [&costmap](slam::CellIndex c) { return costmap.cell_is_free(c); }, goals);
-  const planner::Costmap* cm = &costmap;
-  return [cost, cm](const FrontierCluster& f) { return cost->at(cm->cell_at({f.goal_x, f.goal_y})); };
-}
-
 TargetList selection_targets(const std::vector<FrontierCluster>& clusters, double goal_x, double goal_y,
                              const slam::Pose2& robot, int count) {
   return selection_targets(clusters, goal_x, goal_y, straight_line_from(robot), count);

@@ -119,14 +119,7 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
       const PredictedMap& pm = *in.predicted;
       const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
       Candidate c{&f, d, gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known), 0.0};
-      if (in.skip.region_radius > 0) {
-        // One flood fill of the frontier's region for every verdict of the region rule.
-        const RegionArea a = pm.region_area(*in.map, f, in.skip);
-        c.predicted_share = left_out(a, in.skip) ? 1.0 : 0.0;
-        c.borders_prediction = in.skip.neighbours_last && a.partly_predicted(in.skip.region_tolerance);
-      } else {
-        c.predicted_share = pm.covered_share(*in.map, f, in.skip);
-      }
+      c.predicted_share = pm.covered_share(*in.map, f, in.skip);
       out.push_back(c);
       continue;
     }
@@ -148,7 +141,7 @@ void log_predicted_shares(const SelectionInputs& in, const std::vector<Candidate
                 "{} of {} frontiers fully predicted, {} partly",
                 c.cluster->cells.size(), c.cluster->goal_x, c.cluster->goal_y, 100 * c.predicted_share,
                 c.information_gain, skipped, candidates.size(), partly);
-  if (in.skip.region_radius <= 0 || !spdlog::should_log(spdlog::level::debug)) return;
+  if (in.skip.variant != SkipVariant::kRegion || !spdlog::should_log(spdlog::level::debug)) return;
   const RegionArea a = in.predicted->region_area(*in.map, *c.cluster, in.skip);
   spdlog::debug("look-ahead: its region: {:.1f} m^2 predicted, {:.1f} m^2 not", a.predicted, a.unpredicted);
 }
@@ -214,13 +207,13 @@ Selection select_target(const SelectionInputs& in) {
   s.outcome = candidates.empty() ? SelectionOutcome::kUnreachable : SelectionOutcome::kPlanFailed;
   s.waiting_on_blacklist = candidates.empty() && any_waiting;
   for (int attempt = 0; attempt < in.max_attempts && !candidates.empty(); ++attempt) {
-    const auto pick = in.strategy->choose(candidates);
+    auto pick = in.strategy->choose(candidates);
     if (!pick) {
-      if (attempt == 0) {  // every frontier left is predicted: look-ahead mapping is done
-        s.outcome = SelectionOutcome::kNoFrontier;
-        s.rest_predicted = true;
-      }
-      break;
+      // Every frontier left is predicted. An unobserved prediction is not a map: the robot
+      // visits them, and the time this first happened ends P-SLAM's protocol (sec. V-A.1).
+      s.rest_predicted = true;
+      pick = in.strategy->choose_any(candidates);
+      if (!pick) break;
     }
     const FrontierCluster& target = *candidates[*pick].cluster;
     if (in.predicted && in.strategy->uses_prediction()) log_predicted_shares(in, candidates, *pick);

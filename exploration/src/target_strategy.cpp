@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "lookahead/exploration/distance_advantage_strategy.hpp"
 #include "lookahead/exploration/prediction_aware_strategy.hpp"
 
 namespace lookahead::exploration {
@@ -37,7 +38,14 @@ std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double la
   if (name == "predictive-utility") {
     return std::make_unique<PredictionAwareStrategy>(std::make_unique<UtilityStrategy>(lambda), skip_share);
   }
-  throw std::invalid_argument("unknown strategy '" + name + "' (nearest, utility, predictive or predictive-utility)");
+  if (name == "advantage") return std::make_unique<DistanceAdvantageStrategy>();
+  if (name == "predictive-advantage") {
+    return std::make_unique<PredictionAwareStrategy>(std::make_unique<DistanceAdvantageStrategy>(),
+                                                     skip_share);
+  }
+  throw std::invalid_argument(
+      "unknown strategy '" + name +
+      "' (nearest, utility, advantage, predictive, predictive-utility or predictive-advantage)");
 }
 
 }  // namespace lookahead::exploration

@@ -63,30 +63,6 @@ TEST(PredictedMap, PredictedShareCountsTheUnknownSideOfAFrontier) {
   EXPECT_DOUBLE_EQ(pm.predicted_share(map, cluster, 0.8), 0.0);  // not confident enough
 }
 
-TEST(PredictedMap, AFrontierWhoseGoalGotAHypothesisIsCoveredOnlyWhenAsked) {
-  slam::OccupancyGrid map;
-  FrontierCluster cluster;
-  for (int y = 0; y < 20; ++y) {  // the frontier of the test above, its goal at (-0.5, 0.5)
-    map.add_log_odds({0, y}, -1000);
-    map.add_log_odds({-1, y}, -1000);
-    cluster.cells.push_back({0, y});
-  }
-  cluster.has_goal = true;
-  cluster.goal_x = -0.5;
-  cluster.goal_y = 0.5;
-  PredictedMap pm;
-  pm.add(hypothesis(0.05, 1.0, 0.7, -1000), 5.0, 0.5);  // made for another frontier, 5.5 m away
-  const double share = pm.predicted_share(map, cluster, 0.6);
-  EXPECT_LT(share, 1.0);
-  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, {0.6, true}), share);
-  pm.add(hypothesis(0.05, 0.2, 0.7, -1000), -0.2, 0.9);  // for this frontier (0.5 m off its goal)
-  EXPECT_TRUE(pm.target_predicted(-0.5, 0.5, 1.0, 0.6));
-  EXPECT_FALSE(pm.target_predicted(-0.5, 0.5, 1.0, 0.8));  // not confident enough
-  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, {0.6, true}), 1.0);
-  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, {0.6, false}), pm.predicted_share(map, cluster, 0.6));
-  EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, {0.8, true}), 0.0);
-}
-
 TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   slam::OccupancyGrid map;
   FrontierCluster cluster;
@@ -97,7 +73,8 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   }
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
-  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};  // region: 0.5 m round the goal
+  const SkipRule rule{0.6, SkipVariant::kRegion, 0.5,   0.1, 0.65,
+                      0.0, std::nullopt,         false, 0.35};  // region: 0.5 m round the goal
   PredictedMap none;
   EXPECT_NEAR(none.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.39, 0.03);  // the half disc
   EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
@@ -108,17 +85,19 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   PredictedMap free_region;
   free_region.add(hypothesis(0.05, 1.0, 0.7, -1000));
   EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, rule), 1.0);
-  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, {0.8, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35}), 0.0);  // Psi too low
+  EXPECT_DOUBLE_EQ(free_region.covered_share(
+                       map, cluster,
+                       {0.8, SkipVariant::kRegion, 0.5, 0.1, 0.65, 0.0, std::nullopt, false, 0.35}),
+                   0.0);  // Psi too low
   PredictedMap wall;
   wall.add(hypothesis(0.05, 0.1, 0.7, 2000));  // a wall right beyond the frontier closes it
   EXPECT_LT(wall.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.01);
   EXPECT_DOUBLE_EQ(wall.covered_share(map, cluster, rule), 1.0);
-  // Only a region partly predicted borders a prediction: not one with nothing predicted, nor
-  // one predicted whole (the region rule skips that), nor without the region rule.
-  EXPECT_FALSE(none.borders_prediction(map, cluster, rule));
-  EXPECT_TRUE(part.borders_prediction(map, cluster, rule));
-  EXPECT_FALSE(free_region.borders_prediction(map, cluster, rule));
-  EXPECT_FALSE(part.borders_prediction(map, cluster, {0.6, false, 0.0, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35}));
+  // The far-side variant reads only the cells beside the frontier, all predicted here.
+  EXPECT_DOUBLE_EQ(part.covered_share(map, cluster,
+                                      {0.6, SkipVariant::kFarSide, 7.0, 0.1, 0.65, 0.0,
+                                       std::nullopt, false, 0.35}),
+                   part.predicted_share(map, cluster, 0.6));
   const RegionArea a = part.region_area(map, cluster, rule);
   EXPECT_NEAR(a.predicted + a.unpredicted, 0.39, 0.03);  // the half disc, split
   EXPECT_GT(a.predicted, 0.05);
@@ -136,7 +115,7 @@ TEST(PredictedMap, AnEmptyRegionIsNotCoveredByPrediction) {
   for (int y = 0; y < 20; ++y) cluster.cells.push_back({0, y});  // a stale frontier
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
-  const SkipRule rule{0.6, false, 0.5, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};
+  const SkipRule rule{0.6, SkipVariant::kRegion, 0.5, 0.1, 0.65, 0.0, std::nullopt, false, 0.35};
   PredictedMap none;
   const RegionArea a = none.region_area(map, cluster, rule);
   EXPECT_DOUBLE_EQ(a.predicted + a.unpredicted, 0.0);
@@ -144,7 +123,6 @@ TEST(PredictedMap, AnEmptyRegionIsNotCoveredByPrediction) {
   EXPECT_FALSE(a.covered(1.0));
   EXPECT_TRUE((RegionArea{0.0, 0.0, true}).covered(0.0));  // a predicted wall closing it touches it
   EXPECT_FALSE((RegionArea{0.5, 1.5, false}).covered(1.0));
-  EXPECT_TRUE((RegionArea{0.5, 1.5, false}).partly_predicted(1.0));
 }
 
 // A wall 0.25 m beyond the frontier with a three-cell (0.15 m) gap, as a wall seen from afar
@@ -162,7 +140,7 @@ TEST(PredictedMap, AGapInAWallClosesTheRegionWithWallGap) {
   for (int y = -30; y <= 50; ++y)
     if (y < 9 || y > 11) map.add_log_odds({5, y}, 2000);
   const PredictedMap none;
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};
+  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.0, std::nullopt, false, 0.35};
   EXPECT_GT(none.region_area(map, cluster, rule).unpredicted, 1.0);  // the far side of the wall too
   rule.wall_gap = 0.3;
   EXPECT_LT(none.region_area(map, cluster, rule).unpredicted, 0.5);  // only the strip before it
@@ -183,7 +161,7 @@ TEST(PredictedMap, AKnownBoundaryEndsTheRegion) {
   cluster.goal_y = 0.5;
   PredictedMap pm;
   pm.add(hypothesis(0.05, 0.5, 0.7, -1000));  // the building's inside, up to x = 0.5, predicted
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};
+  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.0, std::nullopt, false, 0.35};
   const RegionArea open = pm.region_area(map, cluster, rule);
   EXPECT_GT(open.unpredicted, 0.5);  // beyond x = 0.5: never predictable
   EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, rule), 0.0);
@@ -212,7 +190,7 @@ TEST(PredictedMap, AWallSliverIsLeftOutOnlyWhenAsked) {
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
   const PredictedMap none;
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.3, std::nullopt, false, 0.35};
+  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.3, std::nullopt, false, 0.35};
   RegionArea a = none.region_area(map, cluster, rule);
   EXPECT_TRUE(a.wall_sliver(rule.region_tolerance));
   EXPECT_FALSE(left_out(a, rule));  // not without the option
@@ -251,7 +229,7 @@ TEST(PredictedMap, APredictedWallMakesNoSliver) {
   cluster.goal_y = 0.5;
   PredictedMap pm;
   pm.add(wall);
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.3, std::nullopt, true, 0.35};
+  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.3, std::nullopt, true, 0.35};
   const RegionArea a = pm.region_area(map, cluster, rule);
   EXPECT_DOUBLE_EQ(a.unpredicted, 0.0);
   EXPECT_TRUE(a.gap_of_prediction);
@@ -277,7 +255,7 @@ TEST(PredictedMap, AnUndecidedBandBeforeAWallIsASliver) {
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
   const PredictedMap none;
-  SkipRule rule{0.6, false, 1.0, 0.1, 0.65, false, 0.0, std::nullopt, false, 0.35};
+  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.0, std::nullopt, false, 0.35};
   const RegionArea before = none.region_area(map, cluster, rule);
   EXPECT_DOUBLE_EQ(before.unpredicted, 0.0);
   EXPECT_FALSE(before.closed_by_gap);
@@ -303,22 +281,11 @@ TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
   cands[2].predicted_share = 0.9;
   EXPECT_EQ(s.choose(cands), std::optional<std::size_t>(1));
   cands[1].predicted_share = 1.0;
-  EXPECT_FALSE(s.choose(cands).has_value());  // everything predicted: nothing to drive to
+  EXPECT_FALSE(s.choose(cands).has_value());  // everything predicted: nothing left to skip to
+  EXPECT_EQ(s.choose_any(cands), std::optional<std::size_t>(0));  // ... so the nearest is observed
   EXPECT_TRUE(s.uses_prediction());
   EXPECT_EQ(s.name(), "predictive");
   EXPECT_EQ(make_strategy("predictive-utility")->name(), "predictive-utility");
-}
-
-TEST(PredictionAwareStrategy, FrontiersBorderingAPredictedRegionComeLast) {
-  const PredictionAwareStrategy s(make_strategy("nearest"), 1.0);
-  FrontierCluster a, b, c;
-  std::vector<Candidate> cands{{&a, 1.0, 5.0, 0.0}, {&b, 4.0, 5.0, 0.0}, {&c, 2.0, 5.0, 1.0}};
-  cands[0].borders_prediction = true;
-  EXPECT_EQ(s.choose(cands), std::optional<std::size_t>(1));  // the far one, clear of predictions
-  cands[1].borders_prediction = true;
-  EXPECT_EQ(s.choose(cands), std::optional<std::size_t>(0));  // all left border one: nearest
-  cands[0].predicted_share = cands[1].predicted_share = 1.0;
-  EXPECT_FALSE(s.choose(cands).has_value());
 }
 
 TEST(HypothesisCheck, CountsCellsTheWorldConfirms) {

@@ -209,9 +209,16 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(e.field(), "lookahead.predict_while_idle");
   EXPECT_EQ(e.value(), "sometimes");
   EXPECT_EQ(parse_error("lookahead:\n  repredict_after: 0\n").file(), "my.yaml");
-  EXPECT_EQ(parse_error("lookahead:\n  targets_by_path: by_foot\n").field(), "lookahead.targets_by_path");
+  e = parse_error("lookahead:\n  skip: some\n");
+  EXPECT_EQ(e.line(), 2u);
+  EXPECT_EQ(e.field(), "lookahead.skip");
+  EXPECT_EQ(e.value(), "some");
+  EXPECT_EQ(parse_mission_options("lookahead:\n  skip: far_side\n", "x").lookahead.skip,
+            SkipVariant::kFarSide);
+  EXPECT_EQ(MissionOptions::defaults().lookahead.skip, SkipVariant::kRegion);
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_wall_gap: -0.5\n").file(), "my.yaml");
-  EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n  neighbours_last: true\n").file(), "my.yaml");  // needs a region
+  EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n").file(),
+            "my.yaml");  // a region has a reach
   EXPECT_EQ(parse_error("lookahead:\n  known_boundary: yes please\n").field(), "lookahead.known_boundary");
   e = parse_error("lookahead:\n  large_surroundings_diameter: wide\n");
   EXPECT_EQ(e.line(), 2u);
@@ -220,10 +227,12 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(parse_error("lookahead:\n  large_surroundings_diameter: -14\n").file(), "my.yaml");  // out of range
   EXPECT_EQ(parse_error("lookahead:\n  large_max_conflict_share: 2\n").file(), "my.yaml");
   // The defaults keep the boundary and the slivers on; the share rule has no regions and ignores them.
-  EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip_region_radius: 0\n  known_boundary: true\n", "x"));
+  EXPECT_NO_THROW(
+      parse_mission_options("lookahead:\n  skip: far_side\n  known_boundary: true\n", "x"));
   EXPECT_EQ(parse_error("lookahead:\n  skip_wall_slivers: maybe\n").value(), "maybe");
   // Slivers are regions of the region rule: without a region there are none.
-  EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip_region_radius: 0\n  skip_wall_slivers: true\n", "x"));
+  EXPECT_NO_THROW(
+      parse_mission_options("lookahead:\n  skip: far_side\n  skip_wall_slivers: true\n", "x"));
   EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip_region_radius: 5\n  skip_wall_slivers: true\n", "x"));
   e = parse_error("slam:\n  prediction:\n    hit_ratio_threshold: high\n");
   EXPECT_EQ(e.line(), 3u);

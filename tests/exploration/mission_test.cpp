@@ -43,6 +43,17 @@ TEST(Mission, SmallOfficeReaches95PercentWithoutCollision) {
   }
 }
 
+// The coverage goal is explored space: a predictive mission ends at it only once the robot
+// has observed that much, whatever its look-ahead map predicts.
+TEST(Mission, PredictiveMissionEndsOnExploredSpaceOnly) {
+  const GeneratedWorld w = small_office();
+  Mission m(w.world, w.start, quick(PoseSource::kTruth, "predictive-advantage"));
+  EXPECT_EQ(m.run(), MissionStatus::kCoverageReached);
+  EXPECT_GE(m.coverage(), 0.95);
+  EXPECT_GE(m.coverage_curve().back().coverage_with_predictions, m.coverage());
+  EXPECT_EQ(m.statistics().collisions, 0);
+}
+
 TEST(Mission, SlamInTheLoopReaches95Percent) {
   const GeneratedWorld w = small_office();
   Mission m(w.world, w.start, quick(PoseSource::kSlam));

@@ -14,6 +14,19 @@ namespace {
 
 using slam::OccupancyGrid;
 
+// Skips every frontier, as the predictive strategy does when all are predicted.
+class SkipsAll : public TargetStrategy {
+ public:
+  [[nodiscard]] std::string name() const override { return "skips-all"; }
+  [[nodiscard]] std::optional<std::size_t> choose(const std::vector<Candidate>&) const override {
+    return std::nullopt;
+  }
+  [[nodiscard]] std::optional<std::size_t> choose_any(
+      const std::vector<Candidate>& c) const override {
+    return NearestFrontierStrategy().choose(c);
+  }
+};
+
 // A 3 m x 1.5 m room (5 cm cells), walled except on its right side: one frontier there.
 OccupancyGrid open_room() { return testing::open_room(60, 30, 60); }
 
@@ -57,6 +70,17 @@ TEST(TargetSelection, ABlacklistedFrontierIsWaitedForUntilItsLastStrike) {
   const Selection given_up = s.select(200.0);
   EXPECT_EQ(given_up.outcome, SelectionOutcome::kUnreachable);
   EXPECT_FALSE(given_up.waiting_on_blacklist);
+}
+
+// A frontier whose far side is only predicted is still unexplored: with every frontier
+// skipped the selection plans to one of them (and says so), it never reports "no frontier".
+TEST(TargetSelection, EveryFrontierPredictedStillPlansToOne) {
+  Scene s;
+  s.strategy = std::make_unique<SkipsAll>();
+  const Selection sel = s.select(0.0);
+  EXPECT_EQ(sel.outcome, SelectionOutcome::kPlanned);
+  EXPECT_TRUE(sel.rest_predicted);
+  EXPECT_GT(sel.goal_x, 2.5);  // the frontier on the room's open right side
 }
 
 }  // namespace

@@ -27,41 +27,40 @@ struct LookaheadOptions {
   /// on its own thread; a fixed simulated latency keeps runs reproducible whatever the
   /// machine's speed (the mission waits for the thread if it is slower) [s].
   double latency = 1.0;
-  /// Predictive strategy: a frontier is skipped when at least `skip_share` of the unknown
-  /// cells beyond it are predicted by hypotheses with Psi >= `skip_confidence`. Measured on
-  /// the maze (README): skipping partly predicted frontiers (0.8) sends the robot zig-zagging
-  /// between far frontiers and costs more time than it saves; 1.0 skips only what is fully
-  /// predicted, and the time is saved by counting predicted space as mapped.
+  /// Which frontiers a predictive strategy skips, counting hypotheses with Psi >=
+  /// `skip_confidence`. kFarSide: at least `skip_share` of the unknown cells beside the
+  /// frontier are predicted (1.0: only what is fully predicted; 0.8 sent the robot
+  /// zig-zagging between far frontiers on the maze). kRegion (the mission default): its
+  /// unexplored region within `skip_region_radius` (the unknown cells reachable from its far
+  /// side, closed by explored and predicted walls) has at most `min_predicted_area` that no
+  /// hypothesis predicts.
+  SkipVariant skip = SkipVariant::kFarSide;
   double skip_confidence = 0.6;
   double skip_share = 1.0;
-  /// Also skip a frontier whose goal was itself a prediction target that got a hypothesis
-  /// with Psi >= `skip_confidence` (the paper's unit: a hypothesis per target cell f,
-  /// sec. II-A), however much of its far side the hypothesis covers.
-  bool skip_predicted_targets = false;
-  /// > 0: instead, skip a frontier when its unexplored region within this radius (the
-  /// unknown cells reachable from its far side, closed by explored and predicted walls) has
-  /// at most `min_predicted_area` that no hypothesis with Psi >= skip_confidence predicts [m].
-  double skip_region_radius = 0.0;
-  /// With skip_region_radius: frontiers whose region is partly predicted are chosen only
-  /// when no other is left (their rest may be predicted by then).
-  bool neighbours_last = false;
-  /// With skip_region_radius: unknown gaps up to this wide in a wall close the region [m].
+  double skip_region_radius = 7.0;  ///< [m], > 0
+  /// kRegion: unknown gaps up to this wide in a wall close the region [m].
   double skip_region_wall_gap = 0.0;
-  /// With skip_region_radius: the environment's outer boundary is known, as in P-SLAM's
+  /// kRegion: the environment's outer boundary is known, as in P-SLAM's
   /// Fig. 7(d) ("assuming that the environmental boundary is known"): the region of a
   /// frontier by the outer wall does not leak beyond it, where nothing can be predicted.
   /// The mission takes the boundary from the world's extent (on in MissionOptions::defaults();
   /// turn it off for a world whose extent is not the building's outline).
   bool known_boundary = false;
-  /// With skip_region_radius: also skip wall slivers, frontiers whose unexplored region is a
+  /// kRegion: also skip wall slivers, frontiers whose unexplored region is a
   /// closed pocket of at most min_predicted_area that no prediction touches
   /// (SkipRule::skip_wall_slivers, RegionArea::wall_sliver).
   bool skip_wall_slivers = false;
   /// The rule of the options above.
   [[nodiscard]] SkipRule skip_rule() const {
-    return {skip_confidence, skip_predicted_targets, skip_region_radius, predictor.min_predicted_area,
-            predictor.features.occupied_threshold, neighbours_last, skip_region_wall_gap, std::nullopt,
-            skip_wall_slivers, SkipRule{}.free};  // Mission::skip_rule() sets the mission's free threshold
+    return {skip_confidence,
+            skip,
+            skip_region_radius,
+            predictor.min_predicted_area,
+            predictor.features.occupied_threshold,
+            skip_region_wall_gap,
+            std::nullopt,
+            skip_wall_slivers,
+            SkipRule{}.free};  // Mission::skip_rule() sets the mission's free threshold
   }
   /// Frontiers predicted per target selection: the chosen target first, then the nearest
   /// other frontier goals (the paper's extension "predict several possible targets",
@@ -74,11 +73,6 @@ struct LookaheadOptions {
   /// one, and a selection that knows which are predicted can leave them out.
   bool predict_while_idle = false;
   double repredict_after = 10.0;  ///< [s, simulated]
-  /// Opt-in: the "nearest" frontiers predicted (at a selection, and while idle) are the
-  /// nearest by the travel cost the nearest strategy chooses by, not in a straight line;
-  /// frontiers the robot cannot reach are not predicted. Costs one Dijkstra search per
-  /// request.
-  bool targets_by_path = false;
   /// Keep the map and the prediction of every hypothesis and write one picture each into
   /// the run folder (predictions/NNN.png, with the true walls of the target region): for
   /// finding out why a hypothesis scored low against the world. Costs memory; off by default.

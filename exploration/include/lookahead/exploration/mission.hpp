@@ -51,7 +51,9 @@ struct MissionStatistics {
   int forgiven_goals = 0;    ///< goals blacklisted for good, retried before "trapped"
   std::size_t retired_frontier_cells = 0;  ///< frontier cells that outlived a visit
   std::size_t scans = 0, map_refreshes = 0;
-  bool ended_on_predictions = false;  ///< done because every frontier left was predicted
+  /// Simulated time [s] a selection first found every frontier left predicted (P-SLAM's end
+  /// of exploration, sec. V-A.1; the mission goes on to observe them); -1: never.
+  double rest_predicted_time = -1.0;
 };
 
 class Mission {
@@ -98,8 +100,6 @@ class Mission {
   void deliver_prediction();
   std::vector<std::pair<double, double>> prediction_targets(double goal_x, double goal_y);
   void predict_while_idle();  ///< LookaheadOptions::predict_while_idle
-  /// Which frontier goals are nearest for the prediction targets (LookaheadOptions::targets_by_path).
-  [[nodiscard]] GoalDistance prediction_order(const std::vector<FrontierCluster>& clusters) const;
   void refresh();
   void decide();
   bool need_new_path();
@@ -161,6 +161,7 @@ class Mission {
   int last_resorts_ = 0;  ///< squeezes and backtracks since the ordinary tries ran out
   bool second_chance_used_ = false;
   bool map_changed_ = false;
+  bool visiting_predicted_ = false;  ///< the goal was chosen with every frontier predicted
   bool path_blocked_ = false;  ///< the follower was dropped because new walls block its path
   int stop_streak_ = 0;        ///< consecutive steps the reactive stop has held the robot
   std::size_t last_resamplings_ = 0, last_best_ = 0;

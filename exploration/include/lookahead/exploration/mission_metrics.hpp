@@ -33,7 +33,7 @@ struct CoverageSample {
   double time = 0.0;         ///< simulated [s]
   double path_length = 0.0;  ///< travelled [m]
   double coverage = 0.0;     ///< [0, 1]
-  /// With look-ahead mapping: explored or predicted free, as the robot believes it.
+  /// With look-ahead mapping: explored, or predicted free where the world is free.
   double coverage_with_predictions = 0.0;
 };
 

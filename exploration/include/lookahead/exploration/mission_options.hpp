@@ -30,7 +30,8 @@ constexpr std::array<std::pair<PoseSource, const char*>, 2> choice_names(PoseSou
 }
 
 struct MissionOptions {
-  std::string strategy = "nearest";  ///< target selection: nearest | utility | predictive
+  std::string strategy = "nearest";  ///< target selection: nearest | utility | advantage |
+                                     ///< predictive[-utility|-advantage]
   double utility_lambda = 1.0;       ///< utility = gain [m^2] - lambda * cost [m]
   PoseSource pose_source = PoseSource::kSlam;
   std::uint64_t seed = 1;            ///< seeds the sensor, odometry, SLAM and planner

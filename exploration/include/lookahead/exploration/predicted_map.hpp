@@ -5,9 +5,11 @@
 // while the robot's map has not explored it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "lookahead/exploration/frontier_detector.hpp"
@@ -16,25 +18,35 @@
 
 namespace lookahead::exploration {
 
+/// Which frontiers look-ahead mapping covers, so that a predictive strategy skips them
+/// (P-SLAM sec. II-B: "the robot can decide not to explore the predicted regions").
+enum class SkipVariant {
+  kFarSide,  ///< the share of unknown cells beside the frontier that is predicted (covered_share)
+  kRegion,   ///< its unexplored region within region_radius is predicted (region_area)
+};
+
+/// lookahead.skip in YAML (a named choice, slam/config/named_choice.hpp).
+constexpr std::array<std::pair<SkipVariant, const char*>, 2> choice_names(SkipVariant) {
+  return {{{SkipVariant::kFarSide, "far_side"}, {SkipVariant::kRegion, "region"}}};
+}
+
 /// When look-ahead mapping covers a frontier (LookaheadOptions has the meaning of each).
 struct SkipRule {
   double min_confidence = 0.6;  ///< hypotheses below this Psi do not count
-  bool by_target = false;       ///< a frontier whose goal got a hypothesis is covered
-  double region_radius = 0.0;   ///< > 0: covered when its region is predicted [m]
-  double region_tolerance = 1.0;  ///< ... up to this much unpredicted area [m^2]
+  SkipVariant variant = SkipVariant::kFarSide;
+  double region_radius = 7.0;     ///< kRegion: the region's reach from the goal [m], > 0
+  double region_tolerance = 1.0;  ///< ... covered up to this much unpredicted area [m^2]
   double occupied = 0.65;       ///< predicted walls: probability at least this
-  /// With region_radius: frontiers whose region is partly predicted are chosen last.
-  bool neighbours_last = false;
-  /// With region_radius: unknown gaps up to this wide in a wall (explored or predicted)
+  /// kRegion: unknown gaps up to this wide in a wall (explored or predicted)
   /// close the region as the wall would [m]; 0: only unbroken walls close it.
   double wall_gap = 0.0;
-  /// With region_radius: the environment's boundary, when known (P-SLAM Fig. 7(d)): no
+  /// kRegion: the environment's boundary, when known (P-SLAM Fig. 7(d)): no
   /// region reaches beyond it, where nothing can be explored or predicted [m].
   struct Extent {
     double min_x, min_y, max_x, max_y;
   };
   std::optional<Extent> boundary;
-  /// With region_radius: also leave out wall slivers, frontiers whose unexplored region is a
+  /// kRegion: also leave out wall slivers, frontiers whose unexplored region is a
   /// closed pocket (RegionArea::wall_sliver): a wall seen at a grazing angle, a corner seen
   /// from afar, a gap into a pillar. Their region then also holds the cells seen but
   /// undecided (probability in [free, occupied)), as the frontier detector counts them
@@ -68,8 +80,6 @@ struct RegionArea {
     return !touched_by_prediction() && !gap_of_prediction && unpredicted <= tolerance &&
            (unpredicted > 0 || closed_by_gap);
   }
-  /// Part of it is predicted, more than `tolerance` of it is not [m^2].
-  [[nodiscard]] bool partly_predicted(double tolerance) const { return predicted > 0 && unpredicted > tolerance; }
 };
 
 /// Does the rule leave out the frontier whose region this is?
@@ -83,8 +93,6 @@ class PredictedMap {
 
   /// Merges a hypothesis; where hypotheses overlap, the more similar one (higher Psi) wins.
   void add(const slam::HypothesisMap& hypothesis);
-  /// Merges a hypothesis made for the frontier target (x, y) [m] and remembers the target.
-  void add(const slam::HypothesisMap& hypothesis, double target_x, double target_y);
   /// Covered by a hypothesis and not yet explored in `map`.
   [[nodiscard]] bool predicted(const slam::OccupancyGrid& map, slam::CellIndex c) const {
     return cells_.is_known(c) && !map.is_known(c);
@@ -93,31 +101,29 @@ class PredictedMap {
   [[nodiscard]] double confidence(slam::CellIndex c) const;
   /// Share of the unknown 4-neighbours of the cluster's cells that are predicted with at
   /// least `min_confidence`: 1 when a look-ahead map already covers what lies beyond.
-  [[nodiscard]] double predicted_share(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
-                                       double min_confidence) const;
-  /// A hypothesis with Psi >= `min_confidence` was made for a target within `radius` [m]
-  /// of (x, y): the unexplored region of that frontier is predicted (sec. II-A, step 4).
-  [[nodiscard]] bool target_predicted(double x, double y, double radius, double min_confidence) const;
+  [[nodiscard]] double predicted_share(const slam::OccupancyGrid& map,
+                                       const FrontierCluster& cluster, double min_confidence) const;
   /// The unexplored region beyond the frontier that no hypothesis with `min_confidence`
   /// predicts [m^2]: unknown cells within `radius` of the cluster's goal reachable from its
   /// far side through unknown cells, not through predicted walls (probability >=
   /// `occupied`), counting those not predicted. What driving there would still reveal.
   [[nodiscard]] double unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                         double radius, double min_confidence, double occupied) const {
-    return region_area(map, cluster, {min_confidence, false, radius, 0.0, occupied, false, 0.0, std::nullopt, false, SkipRule{}.free}).unpredicted;
+    SkipRule rule;
+    rule.min_confidence = min_confidence;
+    rule.variant = SkipVariant::kRegion;
+    rule.region_radius = radius;
+    rule.region_tolerance = 0.0;
+    rule.occupied = occupied;
+    return region_area(map, cluster, rule).unpredicted;
   }
   /// The same region (within rule.region_radius, walls closing it with rule.wall_gap),
   /// split into its predicted and unpredicted parts.
   [[nodiscard]] RegionArea region_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                        const SkipRule& rule) const;
-  /// Under `rule` (region_radius > 0): part of the frontier's region is predicted, part is
-  /// not. Such a frontier borders a predicted region; the rest of it may be predicted too
-  /// once the map around it grows.
-  [[nodiscard]] bool borders_prediction(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
-                                        const SkipRule& rule) const;
-  /// The share of the cluster's far side that look-ahead mapping covers: 1 when its goal is
-  /// a predicted target (`by_target`); with `region_radius`, 1 when the region's unpredicted
-  /// area is within the tolerance and 0 otherwise; else predicted_share().
+  /// The share of the cluster's far side that look-ahead mapping covers: under kRegion, 1
+  /// when the region is left out (left_out()) and 0 otherwise; under kFarSide,
+  /// predicted_share().
   [[nodiscard]] double covered_share(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
                                      const SkipRule& rule) const;
   [[nodiscard]] const slam::OccupancyGrid& cells() const { return cells_; }
@@ -129,10 +135,6 @@ class PredictedMap {
   }
   slam::OccupancyGrid cells_;
   std::unordered_map<std::int64_t, float> confidence_;
-  struct Target {
-    double x, y, psi;
-  };
-  std::vector<Target> targets_;
   std::size_t hypotheses_ = 0;
 };
 

@@ -34,7 +34,16 @@ struct PredictionSummary {
   double final_predicted_accuracy_inside = 0.0;
   /// Coverage counting predicted free cells the world confirms as covered.
   double coverage_with_predictions = 0.0;
-  bool ended_on_predictions = false;
+  /// P-SLAM's skip protocol (sec. V-A.1), read off the mission's curve, reported apart
+  /// from the explored metric: when every frontier left was first predicted
+  /// (MissionStatistics::rest_predicted_time), when explored or correctly predicted reached
+  /// the coverage goal, and the first of the two, with that coverage then [s, simulated;
+  /// < 0: never].
+  double rest_predicted_time = -1.0;
+  double time_to_goal_with_predictions = -1.0;
+  double skip_protocol_end = -1.0;
+  double coverage_with_predictions_at_skip_end = 0.0;
+  double path_at_skip_end = 0.0;  ///< [m]
   std::size_t filter_hypotheses = 0, filter_predicted_updates = 0, filter_used = 0, filter_rejected = 0;
 };
 

@@ -27,14 +27,6 @@ using GoalDistance = std::function<double(const FrontierCluster&)>;
 /// The straight-line distance from `robot` (the default order of the targets).
 GoalDistance straight_line_from(const slam::Pose2& robot);
 
-/// The travel cost from `robot` over the costmap's free cells (the Dijkstra price the
-/// nearest strategy chooses by), one search for the goals of `clusters`; infinity for goals
-/// the robot cannot reach. The paper's target is "the next possible exploration goal"
-/// (sec. II-A): the explorer takes goals by path cost, and in a maze the straight line runs
-/// through pillars, so the nearest goals in a straight line are often not the next ones.
-GoalDistance path_cost_from(const planner::Costmap& costmap, const slam::Pose2& robot,
-                            const std::vector<FrontierCluster>& clusters);
-
 /// The chosen goal first, then the other frontier goals (more than 1 m from it) nearest to
 /// `robot` first, `count` in all.
 TargetList selection_targets(const std::vector<FrontierCluster>& clusters, double goal_x, double goal_y,

@@ -33,7 +33,7 @@ struct Selection {
   int grid_fallbacks = 0;  ///< paths taken from the Dijkstra price when OMPL found none
   double planning_time = 0.0;  ///< [s], summed over the attempts
   std::size_t clusters = 0, candidates = 0;
-  /// kNoFrontier because the strategy skipped every reachable frontier as predicted.
+  /// The strategy skipped every reachable frontier as predicted; the target is one of them.
   bool rest_predicted = false;
   /// kUnreachable only because every reachable frontier is blacklisted for a while: worth
   /// waiting for the entries to expire, not a trap.

@@ -21,9 +21,6 @@ struct Candidate {
   /// Share of the unknown cells beyond the frontier that confident hypotheses predict
   /// (priced only for strategies that use predictions).
   double predicted_share = 0.0;
-  /// Part of its unexplored region is predicted, part not (priced only under
-  /// SkipRule::neighbours_last): the predictive strategy takes such frontiers last.
-  bool borders_prediction = false;
 };
 
 class TargetStrategy {
@@ -32,6 +29,12 @@ class TargetStrategy {
   [[nodiscard]] virtual std::string name() const = 0;
   /// Index of the chosen candidate; nullopt when none is worth going to.
   [[nodiscard]] virtual std::optional<std::size_t> choose(const std::vector<Candidate>& candidates) const = 0;
+  /// The choice with no candidate skipped, for when choose() skips them all: a predicted
+  /// region counts as explored only once observed, so the robot still goes there.
+  [[nodiscard]] virtual std::optional<std::size_t> choose_any(
+      const std::vector<Candidate>& candidates) const {
+    return choose(candidates);
+  }
   /// True when candidates must be priced with the look-ahead map (predicted cells count as
   /// known in the gain, predicted_share filled in).
   [[nodiscard]] virtual bool uses_prediction() const { return false; }
@@ -56,8 +59,10 @@ class UtilityStrategy : public TargetStrategy {
   double lambda_;
 };
 
-/// "nearest", "utility" (with `lambda`), "predictive" (nearest with P-SLAM skipping, see
-/// prediction_aware_strategy.hpp) or "predictive-utility"; throws std::invalid_argument naming the choices otherwise.
+/// "nearest", "utility" (with `lambda`), "advantage" (distance_advantage_strategy.hpp), or
+/// one of them with P-SLAM skipping (prediction_aware_strategy.hpp): "predictive" (over
+/// nearest), "predictive-utility", "predictive-advantage"; throws std::invalid_argument
+/// naming the choices otherwise.
 std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double lambda = 1.0, double skip_share = 0.8);
 
 }  // namespace lookahead::exploration
