@@ -36,10 +36,10 @@ std::string section_of_path(const std::string& path) {
   for (const ConfigSection& s : config_sections()) {
     if (folder == s.name) return folder;
   }
-  throw std::invalid_argument(fmt::format(
-      "{}: cannot tell which section this file configures from its folder '{}': pass "
-      "--section (slam | segslam | hybrid | slam3d | mission | study)",
-      path, folder));
+  throw std::invalid_argument(
+      fmt::format("{}: cannot tell which section this file configures from its folder '{}': pass "
+                  "--section (slam | segslam | hybrid | slam3d | mission | study)",
+                  path, folder));
 }
 
 int check(const ConfigArgs& a) {
@@ -55,8 +55,7 @@ Run add_config_command(CLI::App& app) {
   auto a = std::make_shared<ConfigArgs>();
   app.require_subcommand(1);
   CLI::App* dump = app.add_subcommand("dump", "print a section's documented defaults (YAML)");
-  dump->add_option("section", a->section, "slam | segslam | hybrid | slam3d | mission | study")
-      ->capture_default_str();
+  dump->add_option("section", a->section, "slam | segslam | hybrid | slam3d | mission | study")->capture_default_str();
   CLI::App* chk = app.add_subcommand("check", "load a YAML file and report the first error");
   chk->add_option("file", a->file, "the YAML file")->required();
   chk->add_option("--section", a->check_section,

@@ -16,28 +16,21 @@ namespace lookahead::app {
 const std::vector<ConfigSection>& config_sections() {
   static const std::vector<ConfigSection> sections{
       {"slam", "`lookahead slam LOG --config FILE`: the 2D RBPF and P-SLAM on a log",
-       [] { return pipeline::dump_pslam_options({}); },
-       [](const std::string& f) { pipeline::load_pslam_options(f); }},
+       [] { return pipeline::dump_pslam_options({}); }, [](const std::string& f) { pipeline::load_pslam_options(f); }},
       {"segslam", "`lookahead slam LOG --method segslam --segslam-config FILE`: SegSLAM 2D",
-       [] {
-         return "# lookahead segslam defaults (lookahead config dump segslam)\n" +
-                slam::dump_segslam_options({});
-       },
+       [] { return "# lookahead segslam defaults (lookahead config dump segslam)\n" + slam::dump_segslam_options({}); },
        [](const std::string& f) { slam::load_segslam_options(f); }},
       {"hybrid", "`lookahead hybrid-sim --config FILE` and `lookahead slam LOG --method hybrid`",
        [] {
-         return "# lookahead hybrid defaults (lookahead config dump hybrid)\n" +
-                slam::hybrid::dump_hybrid_config({});
+         return "# lookahead hybrid defaults (lookahead config dump hybrid)\n" + slam::hybrid::dump_hybrid_config({});
        },
        [](const std::string& f) { slam::hybrid::load_hybrid_config(f); }},
       {"slam3d", "`lookahead slam3d INPUT --config FILE`: the octree RBPF and its inputs",
-       [] { return slam::dump_slam3d_options({}); },
-       [](const std::string& f) { slam::load_slam3d_options(f); }},
+       [] { return slam::dump_slam3d_options({}); }, [](const std::string& f) { slam::load_slam3d_options(f); }},
       {"mission", "`lookahead explore --config FILE` and a study's `mission:` block",
        [] { return exploration::dump_mission_options(exploration::MissionOptions::defaults()); },
        [](const std::string& f) { exploration::load_mission_options(f); }},
-      {"study", "`lookahead study FILE`: worlds x strategies x seeds",
-       [] { return exploration::dump_study_keys(); },
+      {"study", "`lookahead study FILE`: worlds x strategies x seeds", [] { return exploration::dump_study_keys(); },
        [](const std::string& f) { exploration::load_study(f); }},
   };
   return sections;
@@ -75,8 +68,7 @@ std::string escape_cell(std::string s) {
 
 std::string section_markdown(const ConfigSection& s) {
   std::ostringstream out;
-  out << "## " << s.name << "\n\n" << s.purpose << ". Defaults: `lookahead config dump " << s.name
-      << "`";
+  out << "## " << s.name << "\n\n" << s.purpose << ". Defaults: `lookahead config dump " << s.name << "`";
   if (s.name != "study") out << " (`config/" << s.name << "/default.yaml`)";
   out << ".\n";
   std::istringstream in(s.dump());

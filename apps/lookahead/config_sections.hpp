@@ -10,9 +10,9 @@
 namespace lookahead::app {
 
 struct ConfigSection {
-  std::string name;     ///< slam | segslam | hybrid | slam3d | mission | study
-  std::string purpose;  ///< one line: which command reads it and how
-  std::function<std::string()> dump;                ///< the defaults as YAML with comments
+  std::string name;                               ///< slam | segslam | hybrid | slam3d | mission | study
+  std::string purpose;                            ///< one line: which command reads it and how
+  std::function<std::string()> dump;              ///< the defaults as YAML with comments
   std::function<void(const std::string&)> check;  ///< loads a file; throws on the first error
 };
 

@@ -34,10 +34,15 @@ std::vector<slam::StampedPose> reference_from_log(const std::string& path) {
 // Which reference pose each estimate pose was paired with, in words and JSON.
 void print_association(const std::vector<slam::StampedPose>& reference, std::size_t matched, double tolerance,
                        nlohmann::json& j) {
-  fmt::print("timestamps associated: each reference pose with the nearest estimate stamp within +-{:.4f} s, no "
-             "clock offset; {} of {} reference poses matched\n", tolerance, matched, reference.size());
-  j["association"] = {{"method", "nearest stamp"}, {"tolerance_s", tolerance}, {"offset_s", 0.0},
-                      {"matched", matched}, {"reference_poses", reference.size()}};
+  fmt::print(
+      "timestamps associated: each reference pose with the nearest estimate stamp within +-{:.4f} s, no "
+      "clock offset; {} of {} reference poses matched\n",
+      tolerance, matched, reference.size());
+  j["association"] = {{"method", "nearest stamp"},
+                      {"tolerance_s", tolerance},
+                      {"offset_s", 0.0},
+                      {"matched", matched},
+                      {"reference_poses", reference.size()}};
 }
 
 std::vector<slam::StampedPose> read_reference(const EvalArgs& a) {
@@ -56,8 +61,10 @@ int run_eval(const EvalArgs& a) {
       relations = slam::relations_from_reference(reference);
       const slam::AbsoluteError ate = slam::absolute_trajectory_error(reference, trajectory, a.tolerance);
       print_association(reference, ate.matched, a.tolerance, j);
-      fmt::print("absolute error after SE(2) alignment: RMSE {:.3f} m, mean {:.3f} m, max {:.3f} m "
-                 "({} poses matched)\n", ate.rmse, ate.mean, ate.max, ate.matched);
+      fmt::print(
+          "absolute error after SE(2) alignment: RMSE {:.3f} m, mean {:.3f} m, max {:.3f} m "
+          "({} poses matched)\n",
+          ate.rmse, ate.mean, ate.max, ate.matched);
       j["ate_rmse_m"] = ate.rmse;
       j["ate_mean_m"] = ate.mean;
       j["ate_max_m"] = ate.max;
@@ -66,9 +73,10 @@ int run_eval(const EvalArgs& a) {
       throw std::runtime_error("eval: --trajectory needs --relations, --reference or --reference-log");
     }
     const slam::RelativeError e = slam::relative_error(relations, trajectory, a.tolerance);
-    fmt::print("relative error: translation {:.3f} +- {:.3f} m, rotation {:.2f} +- {:.2f} deg "
-               "({} relations used, {} without a matching pose)\n",
-               e.trans_mean, e.trans_std, e.rot_mean, e.rot_std, e.used, e.skipped);
+    fmt::print(
+        "relative error: translation {:.3f} +- {:.3f} m, rotation {:.2f} +- {:.2f} deg "
+        "({} relations used, {} without a matching pose)\n",
+        e.trans_mean, e.trans_std, e.rot_mean, e.rot_std, e.used, e.skipped);
     j["trans_mean_m"] = e.trans_mean;
     j["trans_std_m"] = e.trans_std;
     j["rot_mean_deg"] = e.rot_mean;
@@ -78,8 +86,8 @@ int run_eval(const EvalArgs& a) {
   }
   if (!a.map.empty()) {
     const slam::MapEntropy h = slam::map_entropy(slam::read_map(a.map));
-    fmt::print("map entropy: {:.1f} nats over {} observed cells ({:.4f} per cell)\n", h.total,
-               h.observed, h.per_cell());
+    fmt::print("map entropy: {:.1f} nats over {} observed cells ({:.4f} per cell)\n", h.total, h.observed,
+               h.per_cell());
     j["map_entropy_nats"] = h.total;
     j["map_observed_cells"] = h.observed;
   }
@@ -109,8 +117,7 @@ Run add_eval_command(CLI::App& app) {
   app.add_option("--map", args->map, "map .yaml (map_server) whose entropy to compute");
   app.add_option("--reference-map", args->reference_map,
                  "map .yaml taken as truth P: prints the KL divergence D(P || --map)");
-  app.add_option("--tolerance", args->tolerance, "max stamp difference when matching poses [s]")
-      ->capture_default_str();
+  app.add_option("--tolerance", args->tolerance, "max stamp difference when matching poses [s]")->capture_default_str();
   app.add_flag("--json", args->json, "also print the figures as one JSON line");
   return [args] { return run_eval(*args); };
 }

@@ -4,9 +4,9 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
-#include <optional>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include "commands.hpp"
 #include "lookahead/exploration/animation_writer.hpp"
@@ -46,8 +46,8 @@ struct ExploreArgs {
 };
 
 exploration::MissionOptions mission_options(const ExploreArgs& a) {
-  exploration::MissionOptions o = a.config.empty() ? exploration::MissionOptions::defaults()
-                                                  : exploration::load_mission_options(a.config);
+  exploration::MissionOptions o =
+      a.config.empty() ? exploration::MissionOptions::defaults() : exploration::load_mission_options(a.config);
   // A robot file is a partial mission file: the keys it names override the config.
   if (!a.robot.empty()) o = exploration::load_mission_options(a.robot, o);
   if (a.strategy) o.strategy = *a.strategy;
@@ -60,9 +60,12 @@ exploration::MissionOptions mission_options(const ExploreArgs& a) {
   if (a.laser_fov_deg > 0) o.laser.fov = a.laser_fov_deg * M_PI / 180.0;
   if (a.threads) o.slam.threads = *a.threads;
   if (a.robot_radius > 0) o.robot.radius = a.robot_radius;
-  if (a.pose == std::string("truth")) o.pose_source = exploration::PoseSource::kTruth;
-  else if (a.pose == std::string("slam")) o.pose_source = exploration::PoseSource::kSlam;
-  else if (a.pose) throw std::invalid_argument("--pose must be slam or truth, not '" + *a.pose + "'");
+  if (a.pose == std::string("truth"))
+    o.pose_source = exploration::PoseSource::kTruth;
+  else if (a.pose == std::string("slam"))
+    o.pose_source = exploration::PoseSource::kSlam;
+  else if (a.pose)
+    throw std::invalid_argument("--pose must be slam or truth, not '" + *a.pose + "'");
   o.harmonize();
   return o;
 }
@@ -73,9 +76,9 @@ int run_explore(ExploreArgs a) {
   a.world.seed = options.seed;
   if (a.start.size() == 3) a.world.start = slam::Pose2{a.start[0], a.start[1], a.start[2]};
   const exploration::GeneratedWorld world = exploration::load_world(a.world, options.robot.radius);
-  spdlog::info("world {}: {:.1f} m x {:.1f} m, start ({:.2f}, {:.2f}); strategy {}, pose {}, seed {}",
-               a.world.name, world.world.width_m(), world.world.height_m(), world.start.x, world.start.y,
-               options.strategy, exploration::pose_source_name(options.pose_source), options.seed);
+  spdlog::info("world {}: {:.1f} m x {:.1f} m, start ({:.2f}, {:.2f}); strategy {}, pose {}, seed {}", a.world.name,
+               world.world.width_m(), world.world.height_m(), world.start.x, world.start.y, options.strategy,
+               exploration::pose_source_name(options.pose_source), options.seed);
   std::filesystem::create_directories(a.out);
   exploration::Mission mission(world.world, world.start, options);
   if (a.log) mission.record_log(a.out + (a.log_format == "bag" ? "/run.bag" : "/run.log"));
@@ -97,10 +100,11 @@ int run_explore(ExploreArgs a) {
   if (video) video->close();
   const exploration::MissionSummary s = exploration::summarize(mission, a.world.name, wall);
   exploration::write_mission_outputs(mission, s, a.out);
-  spdlog::info("{}: {:.0f} s simulated, {:.1f} m driven, coverage {:.1f}%, {} collision(s); "
-               "{:.1f} s wall ({:.0f}x real time); wrote {}/map.png",
-               s.status, s.simulated_time, s.path_length, 100 * s.coverage, s.statistics.collisions, wall,
-               s.real_time_factor, a.out);
+  spdlog::info(
+      "{}: {:.0f} s simulated, {:.1f} m driven, coverage {:.1f}%, {} collision(s); "
+      "{:.1f} s wall ({:.0f}x real time); wrote {}/map.png",
+      s.status, s.simulated_time, s.path_length, 100 * s.coverage, s.statistics.collisions, wall, s.real_time_factor,
+      a.out);
   return mission.status() == exploration::MissionStatus::kCollision ? 3 : 0;
 }
 
@@ -109,8 +113,10 @@ int run_explore(ExploreArgs a) {
 Run add_explore_command(CLI::App& app) {
   auto a = std::make_shared<ExploreArgs>();
   app.add_option("--config", a->config, "mission options YAML (see config/mission/default.yaml)");
-  app.add_option("--robot", a->robot, "robot YAML: body, laser, odometry (config/robot/pioneer3dx.yaml, p2explore.yaml)");
-  app.add_option("--world", a->world.name, "office | maze | corridor | map .yaml | Stage .world | image")->capture_default_str();
+  app.add_option("--robot", a->robot,
+                 "robot YAML: body, laser, odometry (config/robot/pioneer3dx.yaml, p2explore.yaml)");
+  app.add_option("--world", a->world.name, "office | maze | corridor | map .yaml | Stage .world | image")
+      ->capture_default_str();
   app.add_option("--resolution", a->world.image_resolution, "m/pixel of a plain image world (required for one)");
   app.add_option("--pixel-rule", a->world.pixel_rule, "stage | only_white (plain images)")->capture_default_str();
   app.add_option("--laser-range", a->laser_range, "sensor range [m] (default 8, a SICK LMS-200 in Stage)");
@@ -118,11 +124,13 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--robot-radius", a->robot_radius, "robot disc radius [m] (default 0.25, a Pioneer 3-DX)");
   app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores (default: slam.filter.threads)");
   app.add_option("--start", a->start, "start pose x y theta (default: the world's)")->expected(3);
-  app.add_option("--strategy", a->strategy, "nearest | utility | predictive | predictive-utility (P-SLAM: skip predicted frontiers)");
+  app.add_option("--strategy", a->strategy,
+                 "nearest | utility | predictive | predictive-utility (P-SLAM: skip predicted frontiers)");
   app.add_flag("--predict", a->predict, "P-SLAM: predict at each target and use hypotheses in the particle weights");
   app.add_option("--pose", a->pose, "slam (RBPF in the loop) | truth (planner-only); default slam");
-  app.add_option("--seed", a->seed,
-                 "seed of the world, sensor, odometry, SLAM and planner (overrides the config's mission.seed; default 1)");
+  app.add_option(
+      "--seed", a->seed,
+      "seed of the world, sensor, odometry, SLAM and planner (overrides the config's mission.seed; default 1)");
   app.add_option("--particles", a->particles, "RBPF particles (default 30)");
   app.add_option("--time-limit", a->time_limit, "simulated seconds (default 1800)");
   app.add_option("--coverage-goal", a->coverage_goal, "stop at this share of the reachable area (default 0.95)");
@@ -130,7 +138,8 @@ Run add_explore_command(CLI::App& app) {
   app.add_flag("!--no-animation", a->animation, "skip animation.mp4");
   app.add_flag("--log", a->log, "also write the run as a log `lookahead slam` replays (run.log or run.bag)");
   app.add_option("--log-format", a->log_format, "carmen (run.log) or bag (ROS1 run.bag)")
-      ->check(CLI::IsMember({"carmen", "bag"}))->capture_default_str();
+      ->check(CLI::IsMember({"carmen", "bag"}))
+      ->capture_default_str();
   return [a] { return run_explore(*a); };
 }
 

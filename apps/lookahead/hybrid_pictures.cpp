@@ -13,7 +13,8 @@ std::vector<std::pair<double, double>> ellipse_points(const Eigen::Vector2d& mea
   std::vector<std::pair<double, double>> out;
   for (int i = 0; i < n; ++i) {
     const double a = 2.0 * M_PI * i / n;
-    const Eigen::Vector2d p = mean + eig.eigenvectors() * Eigen::Vector2d(radii.x() * std::cos(a), radii.y() * std::sin(a));
+    const Eigen::Vector2d p =
+        mean + eig.eigenvectors() * Eigen::Vector2d(radii.x() * std::cos(a), radii.y() * std::sin(a));
     out.emplace_back(p.x(), p.y());
   }
   return out;

@@ -13,13 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "run_json.hpp"
 #include "hybrid_pictures.hpp"
 #include "hybrid_trial_trace.hpp"
 #include "lookahead/exploration/line_plot.hpp"
 #include "lookahead/slam/hybrid/hybrid_config.hpp"
 #include "lookahead/slam/hybrid/study.hpp"
 #include "progress_bar.hpp"
+#include "run_json.hpp"
 
 namespace lookahead::app {
 namespace {
@@ -41,9 +41,8 @@ struct HybridSimArgs {
 };
 
 // Paper's Table 1, for the side-by-side text table.
-const char* kPaperRows[][5] = {{"FASTSLAM", "0%", "0%", "0%", "0%"},
-                               {"EKF", "79%", "76%", "72%", "30%"},
-                               {"HYBRID", "87%", "89%", "83%", "63%"}};
+const char* kPaperRows[][5] = {
+    {"FASTSLAM", "0%", "0%", "0%", "0%"}, {"EKF", "79%", "76%", "72%", "30%"}, {"HYBRID", "87%", "89%", "83%", "63%"}};
 
 HybridConfig config_from(const HybridSimArgs& a) {
   HybridConfig c;
@@ -70,10 +69,12 @@ FigureRuns figure_runs(const HybridConfig& c, bool compass, SimulatedRun& run) {
   FigureRuns out;
   out.filters = {FilterKind::kFastSlam, FilterKind::kEkf, FilterKind::kHybrid};
   for (FilterKind k : out.filters) {
-    out.results.push_back(run_trial(k, run, f.filter, s.filter, {c.study.failure_sigma, c.study.failure_iterations}, false));
-    spdlog::info("{} {}: {} ({:.1f} s wall for {:.0f} s simulated, {:.1f}x real time)", compass ? "compass" : "no compass",
-                 filter_name(k), out.results.back().success ? "success" : "failed", out.results.back().wall_s,
-                 out.results.back().simulated_s, out.results.back().simulated_s / out.results.back().wall_s);
+    out.results.push_back(
+        run_trial(k, run, f.filter, s.filter, {c.study.failure_sigma, c.study.failure_iterations}, false));
+    spdlog::info("{} {}: {} ({:.1f} s wall for {:.0f} s simulated, {:.1f}x real time)",
+                 compass ? "compass" : "no compass", filter_name(k), out.results.back().success ? "success" : "failed",
+                 out.results.back().wall_s, out.results.back().simulated_s,
+                 out.results.back().simulated_s / out.results.back().wall_s);
   }
   return out;
 }
@@ -119,7 +120,8 @@ nlohmann::json figures(const HybridConfig& c, const std::string& out) {
   nlohmann::json j;
   SimulatedRun run;
   const FigureRuns with = figure_runs(c, true, run);
-  plot_series(out + "/fig3_trace_compass.png", with, false, "Fig. 3: vehicle uncertainty, with compass", c.simulation.dt);
+  plot_series(out + "/fig3_trace_compass.png", with, false, "Fig. 3: vehicle uncertainty, with compass",
+              c.simulation.dt);
   plot_series(out + "/nees_compass.png", with, true, "NEES over time, with compass", c.simulation.dt);
   const FigureRuns without = figure_runs(c, false, run);
   plot_series(out + "/fig4_trace.png", without, false, "Fig. 4: vehicle uncertainty, no compass", c.simulation.dt);
@@ -127,10 +129,13 @@ nlohmann::json figures(const HybridConfig& c, const std::string& out) {
   write_world_picture(out + "/world.png", run, without.results[2], c);
   for (std::size_t i = 0; i < without.filters.size(); ++i) {
     const TrialResult& r = without.results[i];
-    j[filter_name(without.filters[i])] = {{"success", r.success},       {"failed_at", r.failed_at},
-                                          {"wall_s", r.wall_s},         {"simulated_s", r.simulated_s},
+    j[filter_name(without.filters[i])] = {{"success", r.success},
+                                          {"failed_at", r.failed_at},
+                                          {"wall_s", r.wall_s},
+                                          {"simulated_s", r.simulated_s},
                                           {"x_real_time", r.simulated_s / r.wall_s},
-                                          {"fusions", r.fusions},       {"features", r.map.size()},
+                                          {"fusions", r.fusions},
+                                          {"features", r.map.size()},
                                           {"path_m", run.path_length}};
   }
   return j;
@@ -139,8 +144,10 @@ nlohmann::json figures(const HybridConfig& c, const std::string& out) {
 std::vector<FilterKind> filters_named(const std::vector<std::string>& names) {
   std::vector<FilterKind> out;
   for (const std::string& name : names) {
-    const auto* it = std::find_if(std::begin(kAllFilters), std::end(kAllFilters), [&](FilterKind k) { return filter_name(k) == name; });
-    if (it == std::end(kAllFilters)) throw std::invalid_argument("--filters: unknown filter '" + name + "' (FASTSLAM, EKF, HYBRID, HYBRID-ADAPTIVE)");
+    const auto* it = std::find_if(std::begin(kAllFilters), std::end(kAllFilters),
+                                  [&](FilterKind k) { return filter_name(k) == name; });
+    if (it == std::end(kAllFilters))
+      throw std::invalid_argument("--filters: unknown filter '" + name + "' (FASTSLAM, EKF, HYBRID, HYBRID-ADAPTIVE)");
     out.push_back(*it);
   }
   return out;
@@ -156,9 +163,13 @@ void write_table(const std::string& out, const StudyResult& r, const HybridConfi
     header += fmt::format(" {}, {:.2f} |", c.study.alphas[l], c.study.betas[l]);
     csv += fmt::format(",alpha={} beta={}", c.study.alphas[l], c.study.betas[l]);
   }
-  std::string text = fmt::format("Table 1: success rate over {} trials per cell ({} worlds, seed {}, {} particles)\n\n{}\n|---|{}\n",
-                                 c.study.trials, c.study.worlds, c.study.seed, c.filter.fastslam.particles, header,
-                                 [&] { std::string s; for (std::size_t l = 0; l < levels; ++l) s += "---|"; return s; }());
+  std::string text =
+      fmt::format("Table 1: success rate over {} trials per cell ({} worlds, seed {}, {} particles)\n\n{}\n|---|{}\n",
+                  c.study.trials, c.study.worlds, c.study.seed, c.filter.fastslam.particles, header, [&] {
+                    std::string s;
+                    for (std::size_t l = 0; l < levels; ++l) s += "---|";
+                    return s;
+                  }());
   csv += ",trials\n";
   for (std::size_t f = 0; f < r.filters.size(); ++f) {
     text += "| " + filter_name(r.filters[f]) + " (ours) |";
@@ -172,7 +183,8 @@ void write_table(const std::string& out, const StudyResult& r, const HybridConfi
     text += "\n";
   }
   if (levels == 4) {
-    for (const auto& row : kPaperRows) text += fmt::format("| {} (paper) | {} | {} | {} | {} |\n", row[0], row[1], row[2], row[3], row[4]);
+    for (const auto& row : kPaperRows)
+      text += fmt::format("| {} (paper) | {} | {} | {} | {} |\n", row[0], row[1], row[2], row[3], row[4]);
   }
   std::ofstream(out + "/table1.txt") << text;
   std::ofstream(out + "/table1.csv") << csv;
@@ -187,7 +199,8 @@ int run_hybrid_sim(const HybridSimArgs& a) {
   }
   std::filesystem::create_directories(a.out);
   if (a.trial >= 0) {
-    const auto kinds = a.filters.empty() ? std::vector<FilterKind>{FilterKind::kEkf, FilterKind::kHybrid} : filters_named(a.filters);
+    const auto kinds =
+        a.filters.empty() ? std::vector<FilterKind>{FilterKind::kEkf, FilterKind::kHybrid} : filters_named(a.filters);
     for (const std::string& line : write_trial_traces(c, a.trial, kinds, a.out)) fmt::print("{}\n", line);
     return 0;
   }
@@ -205,9 +218,12 @@ int run_hybrid_sim(const HybridSimArgs& a) {
     write_table(a.out, r, c);
     j["study_wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const StudyCell& cell : r.cells) {
-      j["study"].push_back({{"filter", filter_name(cell.filter)}, {"alpha", c.study.alphas[cell.level]},
-                            {"beta", c.study.betas[cell.level]}, {"successes", cell.successes},
-                            {"trials", cell.trials}, {"mean_trial_wall_s", cell.wall_s / cell.trials},
+      j["study"].push_back({{"filter", filter_name(cell.filter)},
+                            {"alpha", c.study.alphas[cell.level]},
+                            {"beta", c.study.betas[cell.level]},
+                            {"successes", cell.successes},
+                            {"trials", cell.trials},
+                            {"mean_trial_wall_s", cell.wall_s / cell.trials},
                             {"mean_trial_simulated_s", cell.simulated_s / cell.trials},
                             {"failed_trials_and_steps", cell.failures}});
     }
@@ -226,7 +242,8 @@ Run add_hybrid_sim_command(CLI::App& app) {
   app.add_option("--trials", args->trials, "trials per filter and clutter level (default 100)");
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--particles", args->particles, "FastSLAM particles (default 500)");
-  app.add_option("--trial", args->trial, "re-run one trial of the first clutter level alone with a per-step trace (trialN_FILTER.csv)")
+  app.add_option("--trial", args->trial,
+                 "re-run one trial of the first clutter level alone with a per-step trace (trialN_FILTER.csv)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--filters", args->filters, "filters to run (FASTSLAM,EKF,HYBRID,HYBRID-ADAPTIVE)")->delimiter(',');
   app.add_flag("--dump-config", args->dump_config, "print every option with its default (YAML)");

@@ -16,8 +16,8 @@ namespace lookahead::app {
 namespace {
 
 using namespace slam::hybrid;
-using slam::Pose2;
 using slam::normalize_angle;
+using slam::Pose2;
 
 // Squared Mahalanobis distance of `truth` from a 2-D or 3-D Gaussian (as pose_nees).
 double point_nees(const Eigen::Vector2d& truth, const Eigen::Vector2d& mean, const Eigen::Matrix2d& cov) {
@@ -60,7 +60,8 @@ struct JointScore {
 JointScore joint_nees(const Eigen::VectorXd& mean, const Eigen::MatrixXd& cov, const Pose2& truth_pose,
                       const std::vector<Eigen::Vector2d>& truth_features, double match_radius) {
   std::vector<Eigen::Index> rows = {0, 1, 2};
-  std::vector<double> err = {truth_pose.x - mean(0), truth_pose.y - mean(1), normalize_angle(truth_pose.theta - mean(2))};
+  std::vector<double> err = {truth_pose.x - mean(0), truth_pose.y - mean(1),
+                             normalize_angle(truth_pose.theta - mean(2))};
   JointScore score;
   for (Eigen::Index at = 3; at + 1 < mean.size(); at += 2) {
     const Eigen::Vector2d m = mean.segment<2>(at);
@@ -76,7 +77,8 @@ JointScore joint_nees(const Eigen::VectorXd& mean, const Eigen::MatrixXd& cov, c
   const Eigen::Index n = static_cast<Eigen::Index>(rows.size());
   Eigen::MatrixXd p(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
-    for (Eigen::Index j = 0; j < n; ++j) p(i, j) = cov(rows[static_cast<std::size_t>(i)], rows[static_cast<std::size_t>(j)]);
+    for (Eigen::Index j = 0; j < n; ++j)
+      p(i, j) = cov(rows[static_cast<std::size_t>(i)], rows[static_cast<std::size_t>(j)]);
   const Eigen::VectorXd e = Eigen::Map<const Eigen::VectorXd>(err.data(), n);
   p += 1e-9 * Eigen::MatrixXd::Identity(n, n);
   score.nees_per_dof = e.dot(p.ldlt().solve(e)) / static_cast<double>(n);
@@ -107,8 +109,10 @@ class TraceWriter {
   TraceWriter(const std::string& path, const SimulatedRun& run) : csv_(path), run_(run), origin_(run.start) {
     if (!csv_) throw std::runtime_error("cannot write " + path);
     csv_ << "step,t,true_x,true_y,true_theta,est_x,est_y,est_theta,nees,local_nees,origin_nees,trace,"
-            "fusions,local_features,associated,fusion_nis,sigma_theta,origin_sigma_theta,global_features,bad_features,worst_feature_nees,ess,"
-            "observations,true_detections,local_map_nees_dof,local_map_matched,local_sigma_theta,global_map_nees_dof,global_map_matched\n";
+            "fusions,local_features,associated,fusion_nis,sigma_theta,origin_sigma_theta,global_features,bad_features,"
+            "worst_feature_nees,ess,"
+            "observations,true_detections,local_map_nees_dof,local_map_matched,local_sigma_theta,global_map_nees_dof,"
+            "global_map_matched\n";
   }
 
   void operator()(std::size_t i, const SubmapFilter& f) {
@@ -125,14 +129,15 @@ class TraceWriter {
     const PoseGaussian v = f.vehicle();
     const PoseGaussian origin{f.global_map().origin(), f.global_map().covariance().topLeftCorner<3, 3>()};
     const Pose2& e = v.mean;
-    csv_ << fmt::format("{},{:.1f},{:.3f},{:.3f},{:.4f},{:.3f},{:.3f},{:.4f},{:.3f},{:.3f},{:.3f},{:.5f},{},{},{},{:.1f},{:.4f},{:.4f},{},{},{:.1f},{:.1f},{},{},{:.2f},{},{:.4f},{:.2f},{}\n",
-                        i, s.t, s.truth.x, s.truth.y, s.truth.theta, e.x, e.y, e.theta, pose_nees(s.truth, v),
-                        pose_nees(origin_.between(s.truth), f.front_end().vehicle()), pose_nees(origin_, origin),
-                        v.covariance.trace(), fusions_, f.last_fusion().local_features, f.last_fusion().associated,
-                        f.last_fusion().fusion_nis, std::sqrt(v.covariance(2, 2)), std::sqrt(origin.covariance(2, 2)),
-                        f.global_map().features(), score_.bad, score_.worst, front_end_ess(f.front_end()),
-                        s.observations.size(), s.true_detections, local_.nees_per_dof, local_.matched,
-                        local_sigma_theta_, global_.nees_per_dof, global_.matched);
+    csv_ << fmt::format(
+        "{},{:.1f},{:.3f},{:.3f},{:.4f},{:.3f},{:.3f},{:.4f},{:.3f},{:.3f},{:.3f},{:.5f},{},{},{},{:.1f},{:.4f},{:.4f},"
+        "{},{},{:.1f},{:.1f},{},{},{:.2f},{},{:.4f},{:.2f},{}\n",
+        i, s.t, s.truth.x, s.truth.y, s.truth.theta, e.x, e.y, e.theta, pose_nees(s.truth, v),
+        pose_nees(origin_.between(s.truth), f.front_end().vehicle()), pose_nees(origin_, origin), v.covariance.trace(),
+        fusions_, f.last_fusion().local_features, f.last_fusion().associated, f.last_fusion().fusion_nis,
+        std::sqrt(v.covariance(2, 2)), std::sqrt(origin.covariance(2, 2)), f.global_map().features(), score_.bad,
+        score_.worst, front_end_ess(f.front_end()), s.observations.size(), s.true_detections, local_.nees_per_dof,
+        local_.matched, local_sigma_theta_, global_.nees_per_dof, global_.matched);
   }
 
  private:
@@ -161,8 +166,8 @@ std::vector<std::string> write_trial_traces(const HybridConfig& c, int trial, co
     const TrialResult r = run_trial(k, run, o, s.filter, {c.study.failure_sigma, c.study.failure_iterations}, false,
                                     [&](std::size_t i, const SubmapFilter& f) { writer(i, f); });
     lines.push_back(fmt::format("trial {} {}: {} (failed at step {}), {} fusions, {} features -> {}", trial,
-                                filter_name(k), r.success ? "success" : "failed", r.failed_at, r.fusions,
-                                r.map.size(), path));
+                                filter_name(k), r.success ? "success" : "failed", r.failed_at, r.fusions, r.map.size(),
+                                path));
   }
   return lines;
 }

@@ -23,13 +23,18 @@ int main(int argc, char** argv) {
     runs[sub] = make(*sub);
   };
   add("explore", "explore a simulated building (default: the built-in office)", lookahead::app::add_explore_command);
-  add("study", "run worlds x strategies x seeds of missions: tables, t-tests, plots", lookahead::app::add_study_command);
-  add("hybrid-sim", "HybridSLAM simulations: Table 1, Fig. 3/4, NEES (Brooks & Bailey sec. 5)", lookahead::app::add_hybrid_sim_command);
+  add("study", "run worlds x strategies x seeds of missions: tables, t-tests, plots",
+      lookahead::app::add_study_command);
+  add("hybrid-sim", "HybridSLAM simulations: Table 1, Fig. 3/4, NEES (Brooks & Bailey sec. 5)",
+      lookahead::app::add_hybrid_sim_command);
   add("slam", "map a laser log (CARMEN, MRPT rawlog or ROS1 bag) with the RBPF", lookahead::app::add_slam_command);
-  add("check", "report what a laser log or bag holds and what would mislead mapping", lookahead::app::add_check_command);
-  add("slam3d", "3D mapping with the octree RBPF: simulated garage, geb079, or 3DTK scans", lookahead::app::add_slam3d_command);
+  add("check", "report what a laser log or bag holds and what would mislead mapping",
+      lookahead::app::add_check_command);
+  add("slam3d", "3D mapping with the octree RBPF: simulated garage, geb079, or 3DTK scans",
+      lookahead::app::add_slam3d_command);
   add("eval", "relative pose error of a trajectory; entropy of a map", lookahead::app::add_eval_command);
-  add("predict", "one P-SLAM structure prediction on a saved map, with its picture", lookahead::app::add_predict_command);
+  add("predict", "one P-SLAM structure prediction on a saved map, with its picture",
+      lookahead::app::add_predict_command);
   add("config", "print the documented default configuration", lookahead::app::add_config_command);
   CLI11_PARSE(app, argc, argv);
   try {

@@ -50,9 +50,13 @@ slam::ProbabilityMap load_map(const std::string& path) {
 }
 
 nlohmann::json to_json(const predictor::Prediction& p) {
-  nlohmann::json j{{"status", predictor::to_string(p.status)}, {"target", {p.target_x, p.target_y}},
-                   {"transforms_scored", p.candidates}, {"predicted_area_m2", p.predicted_area},
-                   {"seconds", p.seconds}, {"diameter_m", p.diameter}, {"corners", p.features.corners.size()},
+  nlohmann::json j{{"status", predictor::to_string(p.status)},
+                   {"target", {p.target_x, p.target_y}},
+                   {"transforms_scored", p.candidates},
+                   {"predicted_area_m2", p.predicted_area},
+                   {"seconds", p.seconds},
+                   {"diameter_m", p.diameter},
+                   {"corners", p.features.corners.size()},
                    {"lines", p.features.lines.size()}};
   if (p.alignment) {
     const auto& a = *p.alignment;
@@ -85,7 +89,9 @@ Run add_predict_command(CLI::App& app) {
   auto a = std::make_shared<PredictArgs>();
   app.add_option("map", a->map, "map_server map: MAP.yaml, or MAP.pgm with MAP.yaml beside it")->required();
   app.add_option("--target", a->target, "the frontier cell f to predict around, X,Y [m]")
-      ->required()->expected(2)->delimiter(',');
+      ->required()
+      ->expected(2)
+      ->delimiter(',');
   app.add_option("--out", a->out, "output directory");
   app.add_option("--config", a->config, "YAML with a predictor: section (config/slam/default.yaml format)");
   app.add_option("--diameter", a->diameter, "d: surroundings and prediction range [m]");

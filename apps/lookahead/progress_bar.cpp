@@ -39,8 +39,8 @@ void ProgressBar::update(std::size_t done, const std::string& note) {
     const int decile = static_cast<int>(frac * 10);
     if (decile > last_decile_) {
       last_decile_ = decile;
-      spdlog::info("{}: {:3.0f}% ({}/{}) elapsed {}, {:.3g}/s, about {} left {}", label_,
-                   frac * 100, shown_, total_, duration(elapsed), rate, left, note);
+      spdlog::info("{}: {:3.0f}% ({}/{}) elapsed {}, {:.3g}/s, about {} left {}", label_, frac * 100, shown_, total_,
+                   duration(elapsed), rate, left, note);
     }
     return;
   }
@@ -50,8 +50,8 @@ void ProgressBar::update(std::size_t done, const std::string& note) {
   const int filled = static_cast<int>(frac * kWidth);
   fmt::print(stderr, "\r{} [{}{}] {:3.0f}% {}/{} {} {:.3g}/s eta {} {}\x1b[K", label_,
              std::string(static_cast<std::size_t>(filled), '#'),
-             std::string(static_cast<std::size_t>(kWidth - filled), '.'), frac * 100, shown_,
-             total_, duration(elapsed), rate, left, note);
+             std::string(static_cast<std::size_t>(kWidth - filled), '.'), frac * 100, shown_, total_, duration(elapsed),
+             rate, left, note);
   std::fflush(stderr);
 }
 

@@ -10,8 +10,7 @@ namespace lookahead::app {
 
 /// Writes DIR/run.json atomically (a reader never sees half a file). `threads` as the
 /// options say it (0 = every core); `configuration_yaml` the effective options as YAML.
-void write_run_json(const std::string& dir, nlohmann::json figures, int threads,
-                    const std::string& configuration_yaml);
+void write_run_json(const std::string& dir, nlohmann::json figures, int threads, const std::string& configuration_yaml);
 
 /// YAML text indented by two spaces, to nest one dump under a key of another.
 std::string indent(const std::string& yaml);

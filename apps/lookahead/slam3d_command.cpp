@@ -38,11 +38,11 @@ struct Slam3dArgs {
   int threads = -1;
   std::size_t max_sweeps = 0;
   bool dump_config = false;
-  std::string segslam_config;  ///< --method segslam: YAML on top of segslam3d_defaults()
-  int map_samples = -1;        ///< --method segslam: offline samples (-1: the config's)
-  double max_search_radius = -1.0;  ///< --method segslam: reach cap (< 0: the default)
+  std::string segslam_config;         ///< --method segslam: YAML on top of segslam3d_defaults()
+  int map_samples = -1;               ///< --method segslam: offline samples (-1: the config's)
+  double max_search_radius = -1.0;    ///< --method segslam: reach cap (< 0: the default)
   double wide_reentry_radius = -1.0;  ///< --method segslam: wide search cap (0: off, < 0: the default)
-  bool search_per_particle = false;  ///< --method segslam: no search shared by a segment's copies
+  bool search_per_particle = false;   ///< --method segslam: no search shared by a segment's copies
 };
 
 struct Input {
@@ -54,17 +54,15 @@ Input read_input(const Slam3dArgs& a, const slam::Slam3dOptions& o) {
   Input in;
   if (a.input == "garage" || a.input == "geb079") {
     spdlog::info("building the {} world", a.input);
-    in.world =
-        a.input == "garage"
-            ? slam::make_garage_world(static_cast<std::uint64_t>(a.data_seed), o.world_resolution)
-            : slam::load_geb079_world(a.geb079);
+    in.world = a.input == "garage"
+                   ? slam::make_garage_world(static_cast<std::uint64_t>(a.data_seed), o.world_resolution)
+                   : slam::load_geb079_world(a.geb079);
     std::optional<ProgressBar> bar;  // the simulator knows the sweep count once it starts
-    in.log =
-        slam::simulate_cave_crawler(*in.world, o.robot, static_cast<std::uint64_t>(a.data_seed),
-                                    a.max_sweeps, [&](std::size_t done, std::size_t total) {
-                                      if (!bar) bar.emplace("simulate", total);
-                                      bar->update(done);
-                                    });
+    in.log = slam::simulate_cave_crawler(*in.world, o.robot, static_cast<std::uint64_t>(a.data_seed), a.max_sweeps,
+                                         [&](std::size_t done, std::size_t total) {
+                                           if (!bar) bar.emplace("simulate", total);
+                                           bar->update(done);
+                                         });
     if (bar) bar->finish();
   } else if (std::filesystem::is_directory(a.input)) {
     in.log = slam::read_3dtk_folder(a.input, o.threedtk);
@@ -110,8 +108,7 @@ nlohmann::json memory_json(const slam::Rbpf3d& filter) {
   return j;
 }
 
-void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& filter,
-                   double wall_s) {
+void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& filter, double wall_s) {
   std::filesystem::create_directories(a.out);
   const std::size_t best = filter.best_particle();
   const slam::EvidenceOctree& map = filter.particles()[best].map;
@@ -127,16 +124,16 @@ void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& fil
   if (!truth.empty()) paths.push_back({top_down(truth), {40, 160, 40}, "ground truth", 2});
   paths.push_back({top_down(odometry), {230, 140, 20}, "dead reckoning", 1});
   paths.push_back({top_down(estimate), {200, 30, 30}, "RBPF estimate (best particle)", 2});
-  slam::write_map_picture(a.out + "/trajectory.png", slam::top_view(map), paths,
-                          fmt::format("slam3d {} - rbpf, {} particles (top view)",
-                                      input_name(a.input), filter.particles().size()));
+  slam::write_map_picture(
+      a.out + "/trajectory.png", slam::top_view(map), paths,
+      fmt::format("slam3d {} - rbpf, {} particles (top view)", input_name(a.input), filter.particles().size()));
   std::ofstream traj(a.out + "/trajectory.txt");
   traj << "# t x y z roll pitch yaw (best particle, one line per sweep)\n";
   for (std::size_t i = 0; i < estimate.size(); ++i) {
     const slam::Euler e = slam::euler_of(estimate[i].linear());
     const Eigen::Vector3d& p = estimate[i].translation();
-    traj << fmt::format("{:.3f} {:.4f} {:.4f} {:.4f} {:.5f} {:.5f} {:.5f}\n", in.log.sweeps[i].time,
-                        p.x(), p.y(), p.z(), e.roll, e.pitch, e.yaw);
+    traj << fmt::format("{:.3f} {:.4f} {:.4f} {:.4f} {:.5f} {:.5f} {:.5f}\n", in.log.sweeps[i].time, p.x(), p.y(),
+                        p.z(), e.roll, e.pitch, e.yaw);
   }
   const auto& st = filter.statistics();
   nlohmann::json j;
@@ -170,8 +167,8 @@ void write_outputs(const Slam3dArgs& a, const Input& in, const slam::Rbpf3d& fil
   write_run_json(a.out, j, filter.options().threads, a.config);
   if (j.contains("final_position_error_m")) {
     spdlog::info("final position error {:.2f} m (dead reckoning {:.2f} m) over {:.0f} m",
-                 j["final_position_error_m"].get<double>(),
-                 j["dead_reckoning_final_error_m"].get<double>(), j["path_length_m"].get<double>());
+                 j["final_position_error_m"].get<double>(), j["dead_reckoning_final_error_m"].get<double>(),
+                 j["path_length_m"].get<double>());
   }
 }
 
@@ -188,20 +185,21 @@ slam::Slam3dOptions options_from(const Slam3dArgs& a) {
 int run_slam3d(const Slam3dArgs& a) {
   if (a.dump_config) {
     // With --method segslam: SegSLAM's own options (config/segslam/garage3d.yaml).
-    std::fputs(a.method == "segslam" ? dump_segslam3d_defaults().c_str() : slam::dump_slam3d_options({}).c_str(), stdout);
+    std::fputs(a.method == "segslam" ? dump_segslam3d_defaults().c_str() : slam::dump_slam3d_options({}).c_str(),
+               stdout);
     return 0;
   }
   const slam::Slam3dOptions options = options_from(a);
   const Input in = read_input(a, options);
   if (a.method == "segslam") {
     run_segslam3d({a.input, input_name(a.input), a.out, a.segslam_config, a.map_samples, a.data_seed,
-                   a.max_search_radius, a.wide_reentry_radius, a.search_per_particle}, in.log, options);
+                   a.max_search_radius, a.wide_reentry_radius, a.search_per_particle},
+                  in.log, options);
     if (in.world && a.input == "garage") slam::write_octomap(in.world->map, a.out + "/world.bt");
     return 0;
   }
   spdlog::info("{} sweeps, {} beams each; {} particles, {:.2f} m voxels", in.log.sweeps.size(),
-               in.log.sweeps.front().rays.size(), options.filter.particles,
-               options.filter.map.resolution);
+               in.log.sweeps.front().rays.size(), options.filter.particles, options.filter.map.resolution);
   slam::Rbpf3d filter(options.filter);
   ProgressBar bar("slam3d", in.log.sweeps.size());
   const auto start = std::chrono::steady_clock::now();
@@ -215,8 +213,7 @@ int run_slam3d(const Slam3dArgs& a) {
   Slam3dArgs with_yaml = a;
   with_yaml.config = slam::dump_slam3d_options(options);
   write_outputs(with_yaml, in, filter, wall);
-  spdlog::info("done in {:.1f} s, peak {:.0f} MB; wrote {}/trajectory.png and map.bt", wall,
-               peak_memory_mb(), a.out);
+  spdlog::info("done in {:.1f} s, peak {:.0f} MB; wrote {}/trajectory.png and map.bt", wall, peak_memory_mb(), a.out);
   return 0;
 }
 
@@ -224,8 +221,7 @@ int run_slam3d(const Slam3dArgs& a) {
 
 Run add_slam3d_command(CLI::App& app) {
   auto args = std::make_shared<Slam3dArgs>();
-  app.add_option("input", args->input, "garage | geb079 | a folder of 3DTK scanNNN.3d/.pose")
-      ->capture_default_str();
+  app.add_option("input", args->input, "garage | geb079 | a folder of 3DTK scanNNN.3d/.pose")->capture_default_str();
   app.add_option("--method", args->method, "rbpf | segslam")
       ->check(CLI::IsMember({"rbpf", "segslam"}))
       ->capture_default_str();
@@ -234,8 +230,7 @@ Run add_slam3d_command(CLI::App& app) {
   app.add_option("--geb079", args->geb079, "path of geb079.bt")->capture_default_str();
   app.add_option("--particles", args->particles, "number of particles (overrides the config)");
   app.add_option("--seed", args->seed, "filter seed (overrides the config)");
-  app.add_option("--data-seed", args->data_seed, "seed of the simulated world and robot")
-      ->capture_default_str();
+  app.add_option("--data-seed", args->data_seed, "seed of the simulated world and robot")->capture_default_str();
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--max-sweeps", args->max_sweeps, "stop after this many sweeps (0 = all)");
   app.add_option("--segslam-config", args->segslam_config,

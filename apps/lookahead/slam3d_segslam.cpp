@@ -133,10 +133,11 @@ nlohmann::json attempt_json(const slam::segslam::MatchAttempt3& a, const slam::R
     truth = fmt::format(", guess {:.2f} m / {:.3f} rad from the truth, robot truly {:.1f} m from the candidate's path",
                         off.position().norm(), off.yaw, near);
   }
-  spdlog::debug("match attempt: sweep {} particle {} candidate {}: {}{}{}; guess {:.1f} m from its path (radius {:.1f} m, "
-                "search +-{:.1f} m), coarse score {:.2f} -> {:.2f}{}",
-                a.sweep, a.particle, a.candidate, slam::segslam::name_of(a.outcome), *a.rejection ? ": " : "",
-                a.rejection, a.path_distance, a.proximity_radius, a.search_radius, a.guess_score, a.coarse_score, truth);
+  spdlog::debug(
+      "match attempt: sweep {} particle {} candidate {}: {}{}{}; guess {:.1f} m from its path (radius {:.1f} m, "
+      "search +-{:.1f} m), coarse score {:.2f} -> {:.2f}{}",
+      a.sweep, a.particle, a.candidate, slam::segslam::name_of(a.outcome), *a.rejection ? ": " : "", a.rejection,
+      a.path_distance, a.proximity_radius, a.search_radius, a.guess_score, a.coarse_score, truth);
   return j;
 }
 
@@ -187,7 +188,8 @@ double aligned_planar_rmse(const slam::RangeLog3& log, const std::vector<slam::P
   return slam::absolute_trajectory_error(truth, estimate).rmse;
 }
 
-void add_errors(nlohmann::json& j, const slam::RangeLog3& log, const SegSlam3d& f, const std::vector<slam::Pose4>& best) {
+void add_errors(nlohmann::json& j, const slam::RangeLog3& log, const SegSlam3d& f,
+                const std::vector<slam::Pose4>& best) {
   if (!log.has_truth()) return;
   j["trajectory_aligned_rmse_m"] = aligned_planar_rmse(log, best);
   const Eigen::Vector3d end = log.sweeps.back().truth->translation();
@@ -203,9 +205,7 @@ void add_errors(nlohmann::json& j, const slam::RangeLog3& log, const SegSlam3d& 
 
 }  // namespace
 
-std::string dump_segslam3d_defaults() {
-  return slam::dump_segslam_options(slam::segslam::segslam3d_defaults());
-}
+std::string dump_segslam3d_defaults() { return slam::dump_segslam_options(slam::segslam::segslam3d_defaults()); }
 
 void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const slam::Slam3dOptions& o) {
   slam::segslam::SegSlam3dOptions options;
@@ -227,7 +227,8 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < log.sweeps.size(); ++i) {
     filter.add_sweep(log.sweeps[i]);
-    bar.update(i + 1, fmt::format("segs {} matches {}", filter.statistics().segmentations, filter.statistics().matches));
+    bar.update(i + 1,
+               fmt::format("segs {} matches {}", filter.statistics().segmentations, filter.statistics().matches));
   }
   filter.finish();
   bar.finish();
@@ -245,9 +246,10 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.sweeps) odometry.push_back(slam::Pose4::level_of(s.odometry).planar());
   slam::segslam::write_segment_picture(
-      run.out + "/trajectory.png", slam::top_view(best_map.best.map), odometry, slam::segslam::sample_paths(filter, best_map.best),
-      fmt::format("slam3d {} - segslam, {} particles (top view, min-entropy map{})", run.name, filter.particles().size(),
-                  best_map.best.chain ? ": the best particle's chain" : ""));
+      run.out + "/trajectory.png", slam::top_view(best_map.best.map), odometry,
+      slam::segslam::sample_paths(filter, best_map.best),
+      fmt::format("slam3d {} - segslam, {} particles (top view, min-entropy map{})", run.name,
+                  filter.particles().size(), best_map.best.chain ? ": the best particle's chain" : ""));
 
   nlohmann::json j = statistics_json(filter, log);
   j["input"] = run.input;
@@ -262,17 +264,24 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   j["max_search_radius"] = options.segslam.matching.max_search_radius;
   j["share_by_segment"] = options.segslam.matching.share_by_segment;
   const auto& wide = options.extras.wide;
-  j["wide_reentry"] = {{"max_radius_m", wide.max_radius}, {"sigmas", wide.sigmas}, {"trigger_sigmas", wide.trigger_sigmas},
-                       {"guess_step_m", wide.guess_step}, {"guess_angle_step_rad", wide.guess_angle_step},
-                       {"angle_per_error_rad_per_m", wide.angle_per_error}, {"max_angle_rad", wide.max_angle},
-                       {"peaks", wide.peaks}, {"separation_m", wide.separation},
+  j["wide_reentry"] = {{"max_radius_m", wide.max_radius},
+                       {"sigmas", wide.sigmas},
+                       {"trigger_sigmas", wide.trigger_sigmas},
+                       {"guess_step_m", wide.guess_step},
+                       {"guess_angle_step_rad", wide.guess_angle_step},
+                       {"angle_per_error_rad_per_m", wide.angle_per_error},
+                       {"max_angle_rad", wide.max_angle},
+                       {"peaks", wide.peaks},
+                       {"separation_m", wide.separation},
                        {"angle_separation_rad", wide.angle_separation},
-                       {"confirm_distance_m", wide.confirm_distance}, {"confirm_angle_rad", wide.confirm_angle}};
+                       {"confirm_distance_m", wide.confirm_distance},
+                       {"confirm_angle_rad", wide.confirm_angle}};
   j["map_entropy_nats_m3"] = best_map.best.entropy;
   j["chain_entropy_nats_m3"] = best_map.chain_entropy;  // 0 with offline.particle_chain off
   j["map_is_particle_chain"] = best_map.best.chain;
   if (log.has_truth()) {
-    j["map_path_aligned_rmse_m"] = aligned_planar_rmse(log, slam::segslam::sample_trajectory_at_every_sweep(filter, best_map.best));
+    j["map_path_aligned_rmse_m"] =
+        aligned_planar_rmse(log, slam::segslam::sample_trajectory_at_every_sweep(filter, best_map.best));
   }
   j["sample_entropies"] = best_map.entropies;
   j["map_known_voxels"] = best_map.best.map.known_voxels();
@@ -281,14 +290,16 @@ void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const sl
   add_errors(j, log, filter, poses);
   slam::Slam3dOptions with_filter = o;
   with_filter.filter = options.filter;
-  write_run_json(run.out, j, with_filter.filter.threads,
-                 slam::dump_slam3d_options(with_filter) + "segslam:\n" + indent(slam::dump_segslam_options(options.segslam)));
+  write_run_json(
+      run.out, j, with_filter.filter.threads,
+      slam::dump_slam3d_options(with_filter) + "segslam:\n" + indent(slam::dump_segslam_options(options.segslam)));
   if (j.contains("final_position_error_m")) {
-    spdlog::info("final position error {:.2f} m (dead reckoning {:.2f} m) over {:.0f} m; {} segmentations, {} matches "
-                 "({} locked, {} merged)",
-                 j["final_position_error_m"].get<double>(), j["dead_reckoning_final_error_m"].get<double>(),
-                 j["path_length_m"].get<double>(), filter.statistics().segmentations, filter.statistics().matches,
-                 filter.statistics().locked, filter.statistics().merged);
+    spdlog::info(
+        "final position error {:.2f} m (dead reckoning {:.2f} m) over {:.0f} m; {} segmentations, {} matches "
+        "({} locked, {} merged)",
+        j["final_position_error_m"].get<double>(), j["dead_reckoning_final_error_m"].get<double>(),
+        j["path_length_m"].get<double>(), filter.statistics().segmentations, filter.statistics().matches,
+        filter.statistics().locked, filter.statistics().merged);
   }
   spdlog::info("filter {:.1f} s, offline search {:.1f} s, peak {:.0f} MB; wrote {}/trajectory.png and map.bt", wall,
                search_s, peak_memory_mb(), run.out);

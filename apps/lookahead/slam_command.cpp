@@ -10,16 +10,16 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "log_input.hpp"
 #include "lookahead/pipeline/pslam_config.hpp"
 #include "lookahead/pipeline/slam_lookahead.hpp"
 #include "lookahead/slam/eval/map_entropy.hpp"
-#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/map_picture.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
 #include "lookahead/slam/io/tum_trajectory.hpp"
-#include "log_input.hpp"
 #include "lookahead/slam/rbpf/rbpf.hpp"
 #include "lookahead/slam/rbpf/slam_config.hpp"
 #include "process_stats.hpp"
@@ -32,8 +32,7 @@ namespace lookahead::app {
 namespace {
 
 // The real one-loop laser log that Debian's mrpt-common ships: no download needed.
-constexpr const char* kDefaultLog =
-    "/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
+constexpr const char* kDefaultLog = "/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
 
 struct SlamArgs {
   std::string log = kDefaultLog;
@@ -62,13 +61,17 @@ pipeline::PslamOptions options_from(const SlamArgs& a) {
   return file;
 }
 
-nlohmann::json prediction_json(const slam::RbpfStatistics& st,
-                               const pipeline::SlamLookaheadStatistics& p,
+nlohmann::json prediction_json(const slam::RbpfStatistics& st, const pipeline::SlamLookaheadStatistics& p,
                                const pipeline::LogPredictionOptions& options) {
   nlohmann::json records = nlohmann::json::array();
   for (const auto& r : p.records) {
-    records.push_back({{"update", r.update}, {"x", r.x}, {"y", r.y}, {"status", predictor::to_string(r.status)},
-                       {"psi", r.psi}, {"conflict_share", r.conflict_share}, {"predicted_area_m2", r.predicted_area}});
+    records.push_back({{"update", r.update},
+                       {"x", r.x},
+                       {"y", r.y},
+                       {"status", predictor::to_string(r.status)},
+                       {"psi", r.psi},
+                       {"conflict_share", r.conflict_share},
+                       {"predicted_area_m2", r.predicted_area}});
   }
   return {{"requests", p.requests},
           {"hypotheses", p.hypotheses},
@@ -90,15 +93,15 @@ std::vector<slam::PicturePoints> prediction_targets(const pipeline::SlamLookahea
   slam::PicturePoints no_corner{{}, {150, 150, 150}, "... no control point", 3};
   for (const auto& r : p.records) {
     auto& set = r.status == predictor::Prediction::Status::kPredicted ? made
-                : r.status == predictor::Prediction::Status::kNoMatch ? no_match : no_corner;
+                : r.status == predictor::Prediction::Status::kNoMatch ? no_match
+                                                                      : no_corner;
     set.points.emplace_back(r.x, r.y);
   }
   return {no_corner, no_match, made};
 }
 
-void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbpf& filter,
-                   double wall_s, const pipeline::SlamLookahead* lookahead,
-                   const pipeline::LogPredictionOptions& prediction) {
+void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbpf& filter, double wall_s,
+                   const pipeline::SlamLookahead* lookahead, const pipeline::LogPredictionOptions& prediction) {
   std::filesystem::create_directories(a.out);
   const auto& best = filter.particles()[filter.best_particle()];
   const slam::ProbabilityMap map = slam::to_probability_map(best.map);
@@ -115,11 +118,11 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
     for (std::size_t i = 0; i < stamped.size(); ++i) stamped[i].t = log.scans[i].logger_timestamp;
     slam::write_trajectory(a.out + "/trajectory_logger_time.txt", stamped);
   }
-  slam::write_map_picture(a.out + "/map.png", map,
-                          {{filter.odometry(), {230, 140, 20}, "odometry", 1},
-                           {path, {200, 30, 30}, "RBPF estimate (best particle)", 2}},
-                          std::filesystem::path(log.path).filename().string(),
-                          lookahead ? prediction_targets(lookahead->statistics()) : std::vector<slam::PicturePoints>{});
+  slam::write_map_picture(
+      a.out + "/map.png", map,
+      {{filter.odometry(), {230, 140, 20}, "odometry", 1}, {path, {200, 30, 30}, "RBPF estimate (best particle)", 2}},
+      std::filesystem::path(log.path).filename().string(),
+      lookahead ? prediction_targets(lookahead->statistics()) : std::vector<slam::PicturePoints>{});
   const auto& st = filter.statistics();
   const slam::MapEntropy h = slam::map_entropy(map);
   nlohmann::json j;
@@ -143,22 +146,20 @@ void write_outputs(const SlamArgs& a, const slam::LaserLog& log, const slam::Rbp
   j["map_observed_cells"] = h.observed;
   if (lookahead) j["prediction"] = prediction_json(st, lookahead->statistics(), prediction);
   write_run_json(a.out, j, filter.options().threads,
-                 slam::dump_rbpf_options(filter.options()) +
-                     pipeline::dump_log_prediction_options(prediction));
+                 slam::dump_rbpf_options(filter.options()) + pipeline::dump_log_prediction_options(prediction));
 }
 
 int run_slam(const SlamArgs& a) {
   // --config is a HybridSLAM YAML with --method hybrid, read in run_slam_hybrid.
-  const pipeline::PslamOptions file =
-      a.method == "hybrid" ? pipeline::PslamOptions{} : options_from(a);
+  const pipeline::PslamOptions file = a.method == "hybrid" ? pipeline::PslamOptions{} : options_from(a);
   const slam::RbpfOptions& options = file.rbpf;
   slam::LogReadOptions read;
   read.skip_bad_lines = a.skip_bad_lines;
   read.bag = a.bag;
   slam::LaserLog log = load_laser_log(a.log, read, a.max_scans);
   if (a.method == "hybrid") return run_slam_hybrid(log, {a.out, a.config, a.particles, a.seed});
-  spdlog::info("{} scans, {} beams each; {} particles", log.scans.size(),
-               log.scans.front().ranges.size(), options.particles);
+  spdlog::info("{} scans, {} beams each; {} particles", log.scans.size(), log.scans.front().ranges.size(),
+               options.particles);
   slam::Rbpf filter(options);
   // P-SLAM: predictions of the region ahead enter the weights (off: plain RBPF, bit for bit).
   const pipeline::LogPredictionOptions& prediction = file.prediction;
@@ -177,8 +178,7 @@ int run_slam(const SlamArgs& a) {
   const double wall = seconds_since(start);
   write_outputs(a, log, filter, wall, lookahead.get(), prediction);
   spdlog::info("done in {:.1f} s ({:.1f}x real time), peak {:.0f} MB; wrote {}/map.png", wall,
-               (log.scans.back().timestamp - log.scans.front().timestamp) / wall,
-               peak_memory_mb(), a.out);
+               (log.scans.back().timestamp - log.scans.front().timestamp) / wall, peak_memory_mb(), a.out);
   return 0;
 }
 
@@ -200,9 +200,11 @@ Run add_slam_command(CLI::App& app) {
   app.add_option("--method", args->method,
                  "rbpf (grid RBPF), segslam (segmented RBPF with submaps) or hybrid (HybridSLAM landmarks; "
                  "--config then takes a hybrid YAML)")
-      ->check(CLI::IsMember({"rbpf", "segslam", "hybrid"}))->capture_default_str();
+      ->check(CLI::IsMember({"rbpf", "segslam", "hybrid"}))
+      ->capture_default_str();
   app.add_option("--segslam-config", args->segslam_config, "SegSLAM YAML options (see config/segslam/default.yaml)");
-  app.add_option("--map-samples", args->map_samples, "SegSLAM: map samples of the minimum-entropy search (0: the best particle's chain alone)");
+  app.add_option("--map-samples", args->map_samples,
+                 "SegSLAM: map samples of the minimum-entropy search (0: the best particle's chain alone)");
   return [args] {
     if (args->method == "segslam") {
       return run_segslam({args->log, args->out, args->config, args->segslam_config, args->particles, args->seed,

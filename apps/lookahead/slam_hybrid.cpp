@@ -11,12 +11,12 @@
 #include "hybrid_pictures.hpp"
 #include "lookahead/slam/eval/absolute_error.hpp"
 #include "lookahead/slam/eval/relative_error.hpp"
-#include "lookahead/slam/io/tum_trajectory.hpp"
 #include "lookahead/slam/eval/scan_matched_reference.hpp"
 #include "lookahead/slam/hybrid/hybrid_config.hpp"
 #include "lookahead/slam/hybrid/log_mapper.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
+#include "lookahead/slam/io/tum_trajectory.hpp"
 #include "lookahead/slam/sensor/scan_inserter.hpp"
 #include "process_stats.hpp"
 #include "progress_bar.hpp"
@@ -85,11 +85,12 @@ nlohmann::json score(const std::vector<slam::StampedPose>& logger_time, const sl
   if (reference_path.empty()) return j;
   const std::vector<slam::StampedPose> reference = reference_poses(reference_path, log);
   constexpr double kTolerance = 0.051;  // the .gfs.log prints 6 significant digits
-  const slam::RelativeError e = slam::relative_error(slam::relations_from_reference(reference), logger_time, kTolerance);
+  const slam::RelativeError e =
+      slam::relative_error(slam::relations_from_reference(reference), logger_time, kTolerance);
   const slam::AbsoluteError ate = slam::absolute_trajectory_error(reference, logger_time, kTolerance);
-  j = {{"reference", reference_path},  {"trans_mean_m", e.trans_mean}, {"trans_std_m", e.trans_std},
-       {"rot_mean_deg", e.rot_mean},   {"rot_std_deg", e.rot_std},     {"relations_used", e.used},
-       {"ate_rmse_m", ate.rmse},       {"ate_matched", ate.matched}};
+  j = {{"reference", reference_path}, {"trans_mean_m", e.trans_mean}, {"trans_std_m", e.trans_std},
+       {"rot_mean_deg", e.rot_mean},  {"rot_std_deg", e.rot_std},     {"relations_used", e.used},
+       {"ate_rmse_m", ate.rmse},      {"ate_matched", ate.matched}};
   spdlog::info("vs {}: relative error {:.3f} +- {:.3f} m, {:.2f} +- {:.2f} deg ({} relations); ATE {:.3f} m",
                reference_path, e.trans_mean, e.trans_std, e.rot_mean, e.rot_std, e.used, ate.rmse);
   return j;
@@ -138,10 +139,11 @@ int run_slam_hybrid(const slam::LaserLog& log, const SlamHybridArgs& a) {
   write_landmarks(a.out + "/landmarks.txt", r.features);
   const slam::ProbabilityMap map = occupancy_along(log, r.trajectory);
   slam::write_map(map, a.out, "map");
-  slam::write_map_picture(a.out + "/map.png", map,
-                          {{odometry, {230, 140, 20}, "odometry", 1}, {r.trajectory, {30, 30, 200}, "HybridSLAM estimate", 2}},
-                          std::filesystem::path(log.path).filename().string() + " - HybridSLAM landmarks over the grid of its path",
-                          feature_layers(r.features, "landmarks (corners, line ends)", {200, 30, 30}));
+  slam::write_map_picture(
+      a.out + "/map.png", map,
+      {{odometry, {230, 140, 20}, "odometry", 1}, {r.trajectory, {30, 30, 200}, "HybridSLAM estimate", 2}},
+      std::filesystem::path(log.path).filename().string() + " - HybridSLAM landmarks over the grid of its path",
+      feature_layers(r.features, "landmarks (corners, line ends)", {200, 30, 30}));
   const double duration = log.scans.back().timestamp - log.scans.front().timestamp;
   nlohmann::json j;
   j["method"] = "hybrid";

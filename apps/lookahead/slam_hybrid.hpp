@@ -10,9 +10,9 @@ namespace lookahead::app {
 
 struct SlamHybridArgs {
   std::string out;
-  std::string config;      ///< HybridSLAM YAML (config/hybrid/default.yaml format), may be empty
-  int particles = -1;      ///< overrides the config when >= 1
-  long long seed = -1;     ///< overrides the config when >= 0
+  std::string config;   ///< HybridSLAM YAML (config/hybrid/default.yaml format), may be empty
+  int particles = -1;   ///< overrides the config when >= 1
+  long long seed = -1;  ///< overrides the config when >= 0
 };
 
 int run_slam_hybrid(const slam::LaserLog& log, const SlamHybridArgs& args);

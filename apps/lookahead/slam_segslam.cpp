@@ -8,18 +8,18 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "lookahead/slam/segslam/segslam_config.hpp"
+#include "log_input.hpp"
 #include "lookahead/pipeline/pslam_config.hpp"
-#include "lookahead/slam/rbpf/slam_config.hpp"
-#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
+#include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
-#include "lookahead/slam/segslam/min_entropy_search.hpp"
 #include "lookahead/slam/io/tum_trajectory.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
+#include "lookahead/slam/segslam/min_entropy_search.hpp"
 #include "lookahead/slam/segslam/seg_slam.hpp"
 #include "lookahead/slam/segslam/segment_picture.hpp"
+#include "lookahead/slam/segslam/segslam_config.hpp"
 #include "process_stats.hpp"
-#include "log_input.hpp"
 #include "progress_bar.hpp"
 #include "run_json.hpp"
 
@@ -67,7 +67,8 @@ nlohmann::json statistics_json(const SegSlam& filter) {
   j["segments"] = filter.segmap().segment_count();
   j["neff_history"] = st.neff;
   nlohmann::json events = nlohmann::json::array();
-  for (const auto& e : st.match_events) events.push_back({{"scan", e.scan}, {"candidate", e.candidate}, {"weight", e.weight}});
+  for (const auto& e : st.match_events)
+    events.push_back({{"scan", e.scan}, {"candidate", e.candidate}, {"weight", e.weight}});
   j["match_events"] = events;
   return j;
 }
@@ -94,7 +95,8 @@ int run_segslam(const SegSlamArgs& a) {
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < log.scans.size(); ++i) {
     filter.add_scan(log.scans[i]);
-    bar.update(i + 1, fmt::format("{} segments, {} matches", filter.segmap().segment_count(), filter.statistics().matches));
+    bar.update(i + 1,
+               fmt::format("{} segments, {} matches", filter.segmap().segment_count(), filter.statistics().matches));
   }
   filter.finish();
   bar.finish();
@@ -108,14 +110,15 @@ int run_segslam(const SegSlamArgs& a) {
   slam::write_map(best.best.map, a.out, "map");
   write_trajectory_files(a.out, "trajectory", log, filter.trajectory_at_every_scan(filter.best_particle()));
   // The path the map was pasted from (bench/runs/csail_error.py --global scores maps by it).
-  write_trajectory_files(a.out, "map_trajectory", log, slam::segslam::sample_trajectory_at_every_scan(filter, best.best));
+  write_trajectory_files(a.out, "map_trajectory", log,
+                         slam::segslam::sample_trajectory_at_every_scan(filter, best.best));
   std::vector<slam::Pose2> odometry;
   for (const auto& s : log.scans) odometry.push_back(s.odometry);
   // The paths of the submaps the map was pasted from, so the picture's path and walls agree.
-  slam::segslam::write_segment_picture(a.out + "/map.png", best.best.map, odometry,
-                                       slam::segslam::sample_paths(filter, best.best),
-                                       std::filesystem::path(log.path).filename().string() + " - SegSLAM, min-entropy map" +
-                                           (best.best.chain ? " (the best particle's chain)" : ""));
+  slam::segslam::write_segment_picture(
+      a.out + "/map.png", best.best.map, odometry, slam::segslam::sample_paths(filter, best.best),
+      std::filesystem::path(log.path).filename().string() + " - SegSLAM, min-entropy map" +
+          (best.best.chain ? " (the best particle's chain)" : ""));
   const slam::Pose2 final_pose = filter.estimate();
   nlohmann::json j = statistics_json(filter);
   j["log"] = log.path;
@@ -134,10 +137,12 @@ int run_segslam(const SegSlamArgs& a) {
   j["map_particle"] = best.best.particle;
   write_run_json(a.out, j, rbpf.threads,
                  slam::dump_rbpf_options(rbpf) + "segslam:\n" + indent(slam::dump_segslam_options(options)));
-  spdlog::info("done: filter {:.1f} s, offline search {:.1f} s ({} samples{}, min entropy {:.1f}{}); {} segments, {} matches; wrote {}/map.png",
-               filter_s, offline_s, best.entropies.size(), options.offline.particle_chain ? " and the best particle's chain" : "",
-               best.best.entropy, best.best.chain ? ", the chain's" : "", filter.segmap().segment_count(),
-               filter.statistics().matches, a.out);
+  spdlog::info(
+      "done: filter {:.1f} s, offline search {:.1f} s ({} samples{}, min entropy {:.1f}{}); {} segments, {} matches; "
+      "wrote {}/map.png",
+      filter_s, offline_s, best.entropies.size(),
+      options.offline.particle_chain ? " and the best particle's chain" : "", best.best.entropy,
+      best.best.chain ? ", the chain's" : "", filter.segmap().segment_count(), filter.statistics().matches, a.out);
   return 0;
 }
 

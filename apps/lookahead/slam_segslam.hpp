@@ -19,7 +19,7 @@ struct SegSlamArgs {
   int threads = -1;
   std::size_t max_scans = 0;
   bool skip_bad_lines = false;
-  int map_samples = -1;        ///< overrides offline.map_samples
+  int map_samples = -1;  ///< overrides offline.map_samples
   slam::BagReadOptions bag;
 };
 

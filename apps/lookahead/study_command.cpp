@@ -18,16 +18,14 @@ int dispatch(StudyArgs a, const std::vector<std::string>& words) {
     a.verb = words[0];
     a.file = words[1];
   } else {
-    throw slam::ParseError("command line", 0, "study", "",
-                           "expected STUDY.yaml or plan|run|merge|slurm STUDY.yaml");
+    throw slam::ParseError("command line", 0, "study", "", "expected STUDY.yaml or plan|run|merge|slurm STUDY.yaml");
   }
   if (a.verb.empty()) return study_local(a);
   if (a.verb == "plan") return study_plan(a);
   if (a.verb == "run") return study_run(a);
   if (a.verb == "merge") return study_merge(a);
   if (a.verb == "slurm") return study_slurm(a);
-  throw slam::ParseError("command line", 0, "study", a.verb,
-                         "unknown verb: expected plan, run, merge or slurm");
+  throw slam::ParseError("command line", 0, "study", a.verb, "unknown verb: expected plan, run, merge or slurm");
 }
 
 }  // namespace

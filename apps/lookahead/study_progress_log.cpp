@@ -17,22 +17,19 @@ std::string format_duration(double seconds) {
   return fmt::format("{} s", s);
 }
 
-StudyProgressLog::StudyProgressLog(const std::string& path, std::string what)
-    : path_(path), what_(std::move(what)) {
+StudyProgressLog::StudyProgressLog(const std::string& path, std::string what) : path_(path), what_(std::move(what)) {
   std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   out_.open(path, std::ios::app);
 }
 
 void StudyProgressLog::update(const exploration::StudyProgress& p) {
   const std::time_t now = std::time(nullptr);
-  std::string line = fmt::format("{:%Y-%m-%d %H:%M:%S} {}: {}/{} done", fmt::localtime(now), what_,
-                                 p.done, p.total);
+  std::string line = fmt::format("{:%Y-%m-%d %H:%M:%S} {}: {}/{} done", fmt::localtime(now), what_, p.done, p.total);
   if (p.reused > 0) line += fmt::format(" ({} finished earlier)", p.reused);
   if (!p.last_run.empty()) line += ", last " + p.last_run;
   line += fmt::format(", elapsed {}", format_duration(p.elapsed));
   if (p.done > 0 && p.done < p.total) {
-    const double left =
-        p.elapsed / static_cast<double>(p.done) * static_cast<double>(p.total - p.done);
+    const double left = p.elapsed / static_cast<double>(p.done) * static_cast<double>(p.total - p.done);
     line += ", about " + format_duration(left) + " left";
   }
   if (!p.in_flight.empty()) {

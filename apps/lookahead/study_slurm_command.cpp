@@ -41,8 +41,7 @@ void write_script(const fs::path& path, const std::string& text) {
   out << text;
   out.close();
   if (!out) throw slam::ParseError(path.string(), 0, "", "", "cannot write");
-  fs::permissions(path, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
-                  fs::perm_options::add);
+  fs::permissions(path, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec, fs::perm_options::add);
 }
 
 // Runs `command` through the shell; its standard output, or throws with it on failure.
@@ -57,8 +56,7 @@ std::string run_command(const std::string& command) {
   return output;
 }
 
-ex::SlurmJobOptions job_options(const StudyArgs& a, const ex::StudySpec& spec,
-                                std::size_t missions) {
+ex::SlurmJobOptions job_options(const StudyArgs& a, const ex::StudySpec& spec, std::size_t missions) {
   ex::SlurmJobOptions o;
   o.binary = fs::read_symlink("/proc/self/exe").string();
   o.study = fs::absolute(a.file).lexically_normal().string();

@@ -67,17 +67,15 @@ void write_outputs(const ex::StudySpec& spec, const ex::StudyResult& result) {
 
 // Runs `only` (all when nullopt) with a bar on a terminal and the progress log.
 ex::StudyResult run_missions(const ex::StudySpec& spec, const StudyArgs& a,
-                             const std::optional<std::vector<std::size_t>>& only,
-                             const std::string& log_name, const std::string& what,
-                             const std::atomic<bool>* stop) {
+                             const std::optional<std::vector<std::size_t>>& only, const std::string& log_name,
+                             const std::string& what, const std::atomic<bool>* stop) {
   const unsigned jobs = a.jobs ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
   StudyProgressLog log(spec.out + "/logs/" + log_name, what);
   spdlog::info(
       "{}: {} world(s) x {} strateg{} x {} seed(s), pose {}, time limit {:g} s; {}; {} "
       "worker(s); progress in {}",
-      spec.name, spec.worlds.size(), spec.strategies.size(),
-      spec.strategies.size() == 1 ? "y" : "ies", spec.seeds.size(),
-      ex::pose_source_name(spec.mission.pose_source), spec.mission.time_limit, what, jobs,
+      spec.name, spec.worlds.size(), spec.strategies.size(), spec.strategies.size() == 1 ? "y" : "ies",
+      spec.seeds.size(), ex::pose_source_name(spec.mission.pose_source), spec.mission.time_limit, what, jobs,
       log.path());
   std::unique_ptr<ProgressBar> bar;  // made at the first report, which knows how many runs remain
   ex::StudyRunOptions options;
@@ -118,8 +116,7 @@ int study_plan(const StudyArgs& a) {
   ex::write_plan(spec, plan);
   std::size_t finished = 0;
   for (const ex::StudyRunResult& r : ex::collect_study(spec).runs) finished += r.finished ? 1 : 0;
-  spdlog::info("{} mission(s), {} already finished; plan in {}", plan.size(), finished,
-               ex::plan_path(spec));
+  spdlog::info("{} mission(s), {} already finished; plan in {}", plan.size(), finished, ex::plan_path(spec));
   return 0;
 }
 
@@ -136,10 +133,9 @@ int study_run(const StudyArgs& a) {
     return 0;
   }
   const auto only = ex::shard_missions(plan.size(), *shard);
-  const std::string what = fmt::format("shard {}/{} ({} mission(s)) on {}", shard->index,
-                                       shard->count, only.size(), host_name());
-  run_missions(spec, a, only, fmt::format("progress_{}_of_{}.log", shard->index, shard->count),
-               what, nullptr);
+  const std::string what =
+      fmt::format("shard {}/{} ({} mission(s)) on {}", shard->index, shard->count, only.size(), host_name());
+  run_missions(spec, a, only, fmt::format("progress_{}_of_{}.log", shard->index, shard->count), what, nullptr);
   return 0;
 }
 
@@ -168,8 +164,7 @@ int study_local(const StudyArgs& a) {
     spdlog::warn("signal {}: writing the results of the finished runs", sig);
     write_outputs(spec, ex::collect_study(spec));
   });
-  const ex::StudyResult result =
-      run_missions(spec, a, std::nullopt, "progress.log", "every mission", &stop);
+  const ex::StudyResult result = run_missions(spec, a, std::nullopt, "progress.log", "every mission", &stop);
   write_outputs(spec, result);
   return 0;
 }

@@ -39,15 +39,13 @@ void run_scans(benchmark::State& state, const World& world) {
     auto scan = laser.scan(poses[i++ % poses.size()], 0.0);
     benchmark::DoNotOptimize(scan.ranges.data());
   }
-  state.counters["scans/s"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                                 benchmark::Counter::kIsRate);
+  state.counters["scans/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["beams"] = static_cast<double>(laser.options().beam_count());
 }
 
 // Stage's hospital section: 40 m x 18 m of small rooms at 3.7 cm cells.
 void BM_ScanHospitalSection(benchmark::State& state) {
-  static const World world =
-      lookahead::exploration::load_stage_world(kPlans + "stage/worlds/everything.world");
+  static const World world = lookahead::exploration::load_stage_world(kPlans + "stage/worlds/everything.world");
   run_scans(state, world);
 }
 BENCHMARK(BM_ScanHospitalSection);

@@ -34,11 +34,9 @@ std::vector<Ray3> stationary_sweep(const Eigen::Vector3d& base, double yaw) {
     for (int b = 0; b < 61; ++b) {
       const double a = -M_PI / 2 + M_PI * b / 60.0;
       const Eigen::Vector3d dir =
-          laser.linear() *
-          Eigen::Vector3d(std::cos(a), std::sin(a) * std::cos(phi), std::sin(a) * std::sin(phi));
+          laser.linear() * Eigen::Vector3d(std::cos(a), std::sin(a) * std::cos(phi), std::sin(a) * std::sin(phi));
       const auto r = cast_ray(garage().map, laser.translation(), dir, 30.0);
-      rays.push_back(
-          {laser.translation(), laser.translation() + dir * r.value_or(30.0), r.has_value()});
+      rays.push_back({laser.translation(), laser.translation() + dir * r.value_or(30.0), r.has_value()});
     }
   }
   return rays;
@@ -57,8 +55,7 @@ const std::vector<std::vector<Ray3>>& sweeps() {
 octomap::Pointcloud cloud_of(const std::vector<Ray3>& rays) {
   octomap::Pointcloud c;
   for (const Ray3& r : rays)
-    c.push_back(static_cast<float>(r.end.x()), static_cast<float>(r.end.y()),
-                static_cast<float>(r.end.z()));
+    c.push_back(static_cast<float>(r.end.x()), static_cast<float>(r.end.y()), static_cast<float>(r.end.z()));
   return c;
 }
 
@@ -69,8 +66,7 @@ octomap::point3d origin_of(const std::vector<Ray3>& rays) {
 
 EvidenceOctree map_after(int scans) {
   EvidenceOctree map;
-  for (int i = 0; i < scans; ++i)
-    insert_rays(map, sweeps()[static_cast<std::size_t>(i)], {kMaxRange});
+  for (int i = 0; i < scans; ++i) insert_rays(map, sweeps()[static_cast<std::size_t>(i)], {kMaxRange});
   return map;
 }
 
@@ -80,8 +76,8 @@ void BM_InsertSweep_Lookahead(benchmark::State& state) {
   for (auto _ : state) {
     insert_rays(map, sweeps()[i++ % sweeps().size()], {kMaxRange});
   }
-  state.counters["rays/s"] = benchmark::Counter(1830.0 * static_cast<double>(state.iterations()),
-                                                benchmark::Counter::kIsRate);
+  state.counters["rays/s"] =
+      benchmark::Counter(1830.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_InsertSweep_Lookahead)->Unit(benchmark::kMillisecond);
 
@@ -95,8 +91,8 @@ void BM_InsertSweep_OctoMap(benchmark::State& state) {
     const auto& sweep = sweeps()[i++ % sweeps().size()];
     tree.insertPointCloud(cloud_of(sweep), origin_of(sweep), kMaxRange);
   }
-  state.counters["rays/s"] = benchmark::Counter(1830.0 * static_cast<double>(state.iterations()),
-                                                benchmark::Counter::kIsRate);
+  state.counters["rays/s"] =
+      benchmark::Counter(1830.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_InsertSweep_OctoMap)->Unit(benchmark::kMillisecond);
 
@@ -172,11 +168,7 @@ void BM_ParticleMemory_Lookahead(benchmark::State& state) {
   state.counters["unique_bytes_per_particle"] = unique / particles;
   state.counters["all_20_maps_bytes"] = static_cast<double>(EvidenceOctree::distinct_bytes(all));
 }
-BENCHMARK(BM_ParticleMemory_Lookahead)
-    ->Arg(10)
-    ->Arg(39)
-    ->Iterations(3)
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ParticleMemory_Lookahead)->Arg(10)->Arg(39)->Iterations(3)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

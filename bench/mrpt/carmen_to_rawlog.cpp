@@ -43,8 +43,7 @@ struct Line {
   std::vector<std::string> tok;
 
   [[noreturn]] void fail(const std::string& field, const std::string& why) const {
-    throw std::runtime_error(file + ":" + std::to_string(number) + ": field '" + field +
-                             "': " + why);
+    throw std::runtime_error(file + ":" + std::to_string(number) + ": field '" + field + "': " + why);
   }
   const std::string& at(std::size_t i, const std::string& field) const {
     if (i >= tok.size()) fail(field, "missing (line has " + std::to_string(tok.size()) + ")");
@@ -86,8 +85,7 @@ Scan parse_flaser(const Line& l, double frontlaser_offset) {
   for (std::size_t i = 0; i < n; ++i) s.ranges.push_back(l.num(2 + i, "range"));
   const std::size_t p = 2 + n;  // x y theta odom_x odom_y odom_theta ipc host logger
   if (l.tok.size() != p + 9)
-    l.fail("FLASER fields", "expected " + std::to_string(p + 9) + " tokens, got " +
-                                std::to_string(l.tok.size()));
+    l.fail("FLASER fields", "expected " + std::to_string(p + 9) + " tokens, got " + std::to_string(l.tok.size()));
   s.odometry = {l.num(p + 3, "odom_x"), l.num(p + 4, "odom_y"), l.num(p + 5, "odom_theta")};
   s.ipc_ts = l.num(p + 6, "ipc_timestamp");
   s.start_angle = -M_PI / 2;  // FLASER carries no fov: 180 deg by convention
@@ -107,10 +105,8 @@ Scan parse_robotlaser(const Line& l) {
   const std::size_t p = 10 + n + m;  // laser_x .. robot_theta tv rv fsd ssd [turn_axis] ipc..
   const std::size_t trailing = l.tok.size() > p ? l.tok.size() - p : 0;
   if (trailing != 13 && trailing != 14)
-    l.fail("ROBOTLASER1 fields", "expected 13 or 14 after the remissions, got " +
-                                     std::to_string(trailing));
-  const mrpt::poses::CPose2D laser{l.num(p, "laser_x"), l.num(p + 1, "laser_y"),
-                                   l.num(p + 2, "laser_theta")};
+    l.fail("ROBOTLASER1 fields", "expected 13 or 14 after the remissions, got " + std::to_string(trailing));
+  const mrpt::poses::CPose2D laser{l.num(p, "laser_x"), l.num(p + 1, "laser_y"), l.num(p + 2, "laser_theta")};
   s.odometry = {l.num(p + 3, "robot_x"), l.num(p + 4, "robot_y"), l.num(p + 5, "robot_theta")};
   s.ipc_ts = l.num(l.tok.size() - 3, "ipc_timestamp");
   // The line carries both poses, so the mounting offset is exact here (no PARAM needed).
@@ -130,8 +126,7 @@ mrpt::obs::CObservation2DRangeScan to_observation(const Scan& s) {
   const double aperture = s.increment * static_cast<double>(n > 0 ? n - 1 : 0);
   obs.aperture = static_cast<float>(aperture);
   const double centre = s.start_angle + aperture / 2;
-  obs.sensorPose = mrpt::poses::CPose3D(s.laser_offset.x(), s.laser_offset.y(), 0,
-                                        s.laser_offset.phi() + centre, 0, 0);
+  obs.sensorPose = mrpt::poses::CPose3D(s.laser_offset.x(), s.laser_offset.y(), 0, s.laser_offset.phi() + centre, 0, 0);
   obs.resizeScan(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double r = s.ranges[i];
@@ -173,8 +168,7 @@ std::vector<Scan> read_scans(const std::string& path) {
   return scans;
 }
 
-void write_rawlog(const std::vector<Scan>& scans, std::size_t every, const std::string& out,
-                  const std::string& table) {
+void write_rawlog(const std::vector<Scan>& scans, std::size_t every, const std::string& out, const std::string& table) {
   mrpt::io::CFileOutputStream file;
   if (!file.open(out)) throw std::runtime_error(out + ": cannot write");
   auto arch = mrpt::serialization::archiveFrom(file);
@@ -199,8 +193,7 @@ void write_rawlog(const std::vector<Scan>& scans, std::size_t every, const std::
     frame.insert(mrpt::obs::CObservation2DRangeScan::Create(to_observation(s)));
     arch << actions << frame;
     if (tab.is_open())
-      tab << i << ' ' << s.ipc_ts << ' ' << s.odometry.x() << ' ' << s.odometry.y() << ' '
-          << s.odometry.phi() << '\n';
+      tab << i << ' ' << s.ipc_ts << ' ' << s.odometry.x() << ' ' << s.odometry.y() << ' ' << s.odometry.phi() << '\n';
     prev = &s;
   }
 }
@@ -216,7 +209,8 @@ int main(int argc, char** argv) {
       const std::string a = argv[i];
       if ((a == "--every" || a == "--scans") && i + 1 < argc) {
         const std::string v = argv[++i];
-        if (a == "--scans") table = v;
+        if (a == "--scans")
+          table = v;
         else if ((every = std::strtoul(v.c_str(), nullptr, 10)) == 0)
           throw std::runtime_error("--every: need a positive integer, got '" + v + "'");
       } else {
@@ -230,8 +224,8 @@ int main(int argc, char** argv) {
     const std::vector<Scan> scans = read_scans(pos[0]);
     if (scans.empty()) throw std::runtime_error(pos[0] + ": no FLASER or ROBOTLASER1 scans");
     write_rawlog(scans, every, pos[1], table);
-    std::cout << pos[0] << ": " << scans.size() << " scans, wrote "
-              << (scans.size() + every - 1) / every << " to " << pos[1] << "\n";
+    std::cout << pos[0] << ": " << scans.size() << " scans, wrote " << (scans.size() + every - 1) / every << " to "
+              << pos[1] << "\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "carmen_to_rawlog: " << e.what() << "\n";

@@ -144,8 +144,7 @@ void BM_Plan(benchmark::State& state) {
   state.counters["mean_length_m"] = benchmark::Counter(length, benchmark::Counter::kAvgIterations);
 }
 BENCHMARK(BM_Plan)
-    ->ArgsProduct({{static_cast<int>(PlannerAlgorithm::kRrtStar),
-                    static_cast<int>(PlannerAlgorithm::kPrmStar),
+    ->ArgsProduct({{static_cast<int>(PlannerAlgorithm::kRrtStar), static_cast<int>(PlannerAlgorithm::kPrmStar),
                     static_cast<int>(PlannerAlgorithm::kInformedRrtStar)},
                    {2000, 10000}})
     ->Unit(benchmark::kMillisecond);

@@ -167,8 +167,8 @@ void BM_ImprovedProposal_Lookahead(benchmark::State& state) {
   const Pose2 u = previous.between(f.probe.odometry);
   std::mt19937_64 rng(1);
   for (auto _ : state) {
-    benchmark::DoNotOptimize(draw_improved_proposal(f.grid, previous, u, f.probe.odometry, scan, model,
-                                                    motion, {}, rng));
+    benchmark::DoNotOptimize(
+        draw_improved_proposal(f.grid, previous, u, f.probe.odometry, scan, model, motion, {}, rng));
   }
 }
 BENCHMARK(BM_ImprovedProposal_Lookahead)->Unit(benchmark::kMicrosecond);

@@ -45,11 +45,13 @@ std::vector<Record> read_records(const std::string& path) {
     auto t = split(line);
     if (t.empty()) continue;
     if (t[0] == "VERTEX2") {
-      if (t.size() < 5) throw lookahead::slam::ParseError(path, reader.line_number(), "VERTEX2", line, "needs id x y theta");
+      if (t.size() < 5)
+        throw lookahead::slam::ParseError(path, reader.line_number(), "VERTEX2", line, "needs id x y theta");
       truth = {std::stod(t[2]), std::stod(t[3]), lookahead::slam::normalize_angle(std::stod(t[4]))};
       have_truth = true;
     } else if (t[0] == "ROBOTLASER1") {
-      if (!have_truth) throw lookahead::slam::ParseError(path, reader.line_number(), "ROBOTLASER1", "", "scan before any VERTEX2");
+      if (!have_truth)
+        throw lookahead::slam::ParseError(path, reader.line_number(), "ROBOTLASER1", "", "scan before any VERTEX2");
       out.push_back({truth, std::move(t)});
     }
   }
@@ -93,7 +95,8 @@ int main(int argc, char** argv) {
     const auto odom = lookahead::slam::synthesize_odometry(truth, m);
     std::ofstream o(out);
     o << "# Real scans, SYNTHETIC odometry: written by lookahead bench/tools/synth_odometry\n"
-      << fmt::format("# from {} seed {} kt {} kr {} krt {} kb {} kbw {}\n", in, m.seed, m.k_t, m.k_r, m.k_rt, m.k_b, m.k_bw);
+      << fmt::format("# from {} seed {} kt {} kr {} krt {} kb {} kbw {}\n", in, m.seed, m.k_t, m.k_r, m.k_rt, m.k_b,
+                     m.k_bw);
     for (std::size_t i = 0; i < records.size(); ++i) {
       const auto& t = records[i].scan_fields;
       const std::string stamp = t[t.size() - 3] + " synth " + t.back();

@@ -5,8 +5,7 @@
 
 namespace lookahead::exploration {
 
-BagRunLog::BagRunLog(const std::string& path, const LaserOptions& laser)
-    : writer_((laser.validate(), path)) {}
+BagRunLog::BagRunLog(const std::string& path, const LaserOptions& laser) : writer_((laser.validate(), path)) {}
 
 void BagRunLog::odometry(const slam::Pose2& odom, double /*tv*/, double /*rv*/, double t) { writer_.odometry(t, odom); }
 

@@ -97,7 +97,8 @@ std::vector<std::size_t> shortest_way(const std::vector<planner::Point2>& crumbs
     open.push({d, j});
   };
   while (!open.empty()) {
-    const auto [d, i] = open.top();
+    const double d = open.top().first;
+    const std::size_t i = open.top().second;  // a plain variable: lambdas below capture it
     open.pop();
     if (i == to) break;
     if (d > dist[i]) continue;

@@ -39,14 +39,13 @@ void CarmenWriter::scan(const slam::LaserScan& s) {
   // 0.1 mm: finer than any noise the simulator adds, so the round trip changes nothing.
   for (const float r : s.ranges) std::fprintf(f_, " %.4f", static_cast<double>(r));
   const slam::Pose2 laser = s.odometry.compose(s.laser_offset);
-  std::fprintf(f_, " %.6f %.6f %.6f %.6f %.6f %.6f", laser.x, laser.y, laser.theta, s.odometry.x,
-               s.odometry.y, s.odometry.theta);
+  std::fprintf(f_, " %.6f %.6f %.6f %.6f %.6f %.6f", laser.x, laser.y, laser.theta, s.odometry.x, s.odometry.y,
+               s.odometry.theta);
   tail(s.timestamp);
 }
 
 void CarmenWriter::true_pose(const slam::Pose2& truth, const slam::Pose2& odom, double t) {
-  std::fprintf(f_, "TRUEPOS %.6f %.6f %.6f %.6f %.6f %.6f", truth.x, truth.y, truth.theta, odom.x,
-               odom.y, odom.theta);
+  std::fprintf(f_, "TRUEPOS %.6f %.6f %.6f %.6f %.6f %.6f", truth.x, truth.y, truth.theta, odom.x, odom.y, odom.theta);
   tail(t);
 }
 

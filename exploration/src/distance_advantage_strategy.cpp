@@ -11,14 +11,13 @@ double distance_advantage(const std::vector<Candidate>& c, std::size_t i) {
   const FrontierCluster& f = *c[i].cluster;
   for (std::size_t j = 0; j < c.size(); ++j) {
     if (j == i) continue;
-    nearest_other = std::min(nearest_other, std::hypot(c[j].cluster->goal_x - f.goal_x,
-                                                       c[j].cluster->goal_y - f.goal_y));
+    nearest_other =
+        std::min(nearest_other, std::hypot(c[j].cluster->goal_x - f.goal_x, c[j].cluster->goal_y - f.goal_y));
   }
   return nearest_other - c[i].path_cost;
 }
 
-std::optional<std::size_t> DistanceAdvantageStrategy::choose(
-    const std::vector<Candidate>& c) const {
+std::optional<std::size_t> DistanceAdvantageStrategy::choose(const std::vector<Candidate>& c) const {
   std::optional<std::size_t> best;
   bool best_has_advantage = false;
   for (std::size_t i = 0; i < c.size(); ++i) {

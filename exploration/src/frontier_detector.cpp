@@ -18,9 +18,9 @@ constexpr int kUndecidedBand = 2;
 
 const FrontierOptions& checked(const FrontierOptions& options) {
   if (!(options.free_threshold > 0 && options.free_threshold < 0.5) ||
-      !(options.occupied_threshold > 0.5 && options.occupied_threshold < 1) ||
-      options.min_cluster_cells < 1 || options.robot_radius < 0 || options.goal_search_radius < 0 ||
-      options.cluster_gap < 1 || options.cluster_gap > 5) {
+      !(options.occupied_threshold > 0.5 && options.occupied_threshold < 1) || options.min_cluster_cells < 1 ||
+      options.robot_radius < 0 || options.goal_search_radius < 0 || options.cluster_gap < 1 ||
+      options.cluster_gap > 5) {
     throw std::invalid_argument("frontier options out of range");
   }
   return options;
@@ -31,8 +31,7 @@ const FrontierOptions& checked(const FrontierOptions& options) {
 // count as unexplored, and the unseen inside of a wall is no frontier.
 FrontierDetector::FrontierDetector(const FrontierOptions& options)
     : options_(checked(options)),
-      cell_test_(slam::FrontierCellRule{options.free_threshold, options.occupied_threshold,
-                                        kUndecidedBand, true}) {}
+      cell_test_(slam::FrontierCellRule{options.free_threshold, options.occupied_threshold, kUndecidedBand, true}) {}
 
 bool FrontierDetector::is_free(const slam::OccupancyGrid& grid, CellIndex c) const {
   return cell_test_.is_free(grid, c);
@@ -117,8 +116,8 @@ bool FrontierDetector::find_goal(const slam::OccupancyGrid& grid, FrontierCluste
       }
     }
     if (depth >= max_steps || best < INFINITY) continue;  // stop widening once a goal exists
-    for (const CellIndex n : {CellIndex{c.x + 1, c.y}, CellIndex{c.x - 1, c.y}, CellIndex{c.x, c.y + 1},
-                              CellIndex{c.x, c.y - 1}}) {
+    for (const CellIndex n :
+         {CellIndex{c.x + 1, c.y}, CellIndex{c.x - 1, c.y}, CellIndex{c.x, c.y + 1}, CellIndex{c.x, c.y - 1}}) {
       if (is_free(grid, n) && seen.insert(n).second) queue.push_back({n, depth + 1});
     }
   }

@@ -15,9 +15,7 @@ void require(bool ok, const char* field, double value, const char* why) {
   }
 }
 
-int cells(double metres, double resolution) {
-  return static_cast<int>(std::lround(metres / resolution));
-}
+int cells(double metres, double resolution) { return static_cast<int>(std::lround(metres / resolution)); }
 
 }  // namespace
 
@@ -31,21 +29,17 @@ void OfficeOptions::validate() const {
   require(wall_thickness >= resolution, "wall_thickness", wall_thickness, "must be >= resolution");
 }
 
-double OfficeOptions::width_m() const {
-  return rooms_per_side * room_width + (rooms_per_side + 1) * wall_thickness;
-}
+double OfficeOptions::width_m() const { return rooms_per_side * room_width + (rooms_per_side + 1) * wall_thickness; }
 
-double OfficeOptions::height_m() const {
-  return 2.0 * room_depth + corridor_width + 4.0 * wall_thickness;
-}
+double OfficeOptions::height_m() const { return 2.0 * room_depth + corridor_width + 4.0 * wall_thickness; }
 
 // Layout from the bottom: wall, lower rooms, wall, corridor, wall, upper rooms, wall. The
 // floor starts solid and rooms, corridor and doors are carved out of it.
 GeneratedWorld make_office(const OfficeOptions& o) {
   o.validate();
   const double t = o.wall_thickness;
-  World w(cells(o.width_m(), o.resolution), cells(o.height_m(), o.resolution), o.resolution,
-          {0.0, 0.0}, World::kOccupied);
+  World w(cells(o.width_m(), o.resolution), cells(o.height_m(), o.resolution), o.resolution, {0.0, 0.0},
+          World::kOccupied);
   const double corridor_lo = t + o.room_depth + t;
   const double corridor_hi = corridor_lo + o.corridor_width;
   w.fill_rect({t, corridor_lo}, {o.width_m() - t, corridor_hi}, World::kFree);
@@ -89,13 +83,11 @@ GeneratedWorld make_pslam_maze(const MazeOptions& o) {
   const int n = o.blocks_per_side();
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
-      const Eigen::Vector2d lo(o.corridor + i * (o.block + o.corridor),
-                               o.corridor + j * (o.block + o.corridor));
+      const Eigen::Vector2d lo(o.corridor + i * (o.block + o.corridor), o.corridor + j * (o.block + o.corridor));
       w.fill_rect(lo, lo + Eigen::Vector2d(o.block, o.block), World::kOccupied);
     }
   }
-  w.set_source("generated P-SLAM square maze: " + std::to_string(n) + " x " + std::to_string(n) +
-               " blocks");
+  w.set_source("generated P-SLAM square maze: " + std::to_string(n) + " x " + std::to_string(n) + " blocks");
   return {std::move(w), {o.corridor / 2.0, o.corridor / 2.0, 0.0}};
 }
 
@@ -131,8 +123,7 @@ GeneratedWorld make_pslam_corridor(const CorridorOptions& o) {
     const double y0 = side == 0 ? 0.0 : o.width - o.box_depth;
     w.fill_rect({x, y0}, {x + o.box_length, y0 + o.box_depth}, World::kOccupied);
   }
-  for (double s = o.width + o.box_spacing; s + o.box_length < o.leg_bc + o.width - 0.5;
-       s += o.box_spacing, side ^= 1) {
+  for (double s = o.width + o.box_spacing; s + o.box_length < o.leg_bc + o.width - 0.5; s += o.box_spacing, side ^= 1) {
     const double y = s + jitter(rng);
     const double x0 = side == 0 ? o.leg_ab : o.leg_ab + o.width - o.box_depth;
     w.fill_rect({x0, y}, {x0 + o.box_depth, y + o.box_length}, World::kOccupied);

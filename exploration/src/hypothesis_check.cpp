@@ -19,8 +19,7 @@ bool wall_near(const World& world, double x, double y, double tolerance) {
   return false;
 }
 
-bool is_observable(const World& world, const std::vector<std::uint8_t>& observable, double x,
-                   double y) {
+bool is_observable(const World& world, const std::vector<std::uint8_t>& observable, double x, double y) {
   if (observable.empty()) return true;
   const slam::CellIndex c = world.cell_of({x, y});
   return world.contains(c) && observable[static_cast<std::size_t>(c.y) * world.width() + c.x] != 0;
@@ -33,8 +32,7 @@ bool is_observable(const World& world, const std::vector<std::uint8_t>& observab
 // everything beyond a generated floor's raster). Scored against those solid cells, a right
 // hypothesis that reaches past an unseen outer wall looked wrong.
 slam::OccupancyGrid world_grid(const slam::HypothesisMap& h, const World& world,
-                               const std::vector<std::uint8_t>& observable, slam::CellIndex lo,
-                               slam::CellIndex hi) {
+                               const std::vector<std::uint8_t>& observable, slam::CellIndex lo, slam::CellIndex hi) {
   slam::OccupancyGrid g(h.grid.options());
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {
@@ -47,13 +45,10 @@ slam::OccupancyGrid world_grid(const slam::HypothesisMap& h, const World& world,
   return g;
 }
 
-predictor::SimilarityScore psi_against(const predictor::CoarseOccupancy& predicted,
-                                       const slam::OccupancyGrid& truth,
-                                       const predictor::RegionSamples& region,
-                                       double occupied_threshold, double similarity_resolution,
-                                       int similarity_tolerance_cells) {
-  const predictor::CoarseOccupancy coarse(truth, similarity_resolution, occupied_threshold,
-                                          similarity_tolerance_cells);
+predictor::SimilarityScore psi_against(const predictor::CoarseOccupancy& predicted, const slam::OccupancyGrid& truth,
+                                       const predictor::RegionSamples& region, double occupied_threshold,
+                                       double similarity_resolution, int similarity_tolerance_cells) {
+  const predictor::CoarseOccupancy coarse(truth, similarity_resolution, occupied_threshold, similarity_tolerance_cells);
   return predictor::similarity(predicted, coarse, region, {});
 }
 
@@ -64,9 +59,9 @@ bool prediction_matches_world(bool predicted_wall, const World& world, double x,
 }
 
 HypothesisCheck check_against_world(const slam::HypothesisMap& h, const World& world,
-                                    const std::vector<std::uint8_t>& observable,
-                                    double occupied_threshold, double wall_tolerance,
-                                    double similarity_resolution, int similarity_tolerance_cells) {
+                                    const std::vector<std::uint8_t>& observable, double occupied_threshold,
+                                    double wall_tolerance, double similarity_resolution,
+                                    int similarity_tolerance_cells) {
   HypothesisCheck check;
   slam::CellIndex lo, hi;
   if (!h.grid.known_bounds(lo, hi)) return check;
@@ -91,14 +86,13 @@ HypothesisCheck check_against_world(const slam::HypothesisMap& h, const World& w
       region.y.push_back(y);
     }
   }
-  const predictor::SimilarityScore score =
-      psi_against(predicted, world_grid(h, world, observable, lo, hi), region, occupied_threshold,
-                  res, similarity_tolerance_cells);
+  const predictor::SimilarityScore score = psi_against(predicted, world_grid(h, world, observable, lo, hi), region,
+                                                       occupied_threshold, res, similarity_tolerance_cells);
   check.psi = score.psi;
   check.predicted_walls = score.target_occupied;
   check.world_walls = score.reference_occupied;
-  check.psi_solid_world = psi_against(predicted, world_grid(h, world, {}, lo, hi), region,
-                                      occupied_threshold, res, similarity_tolerance_cells)
+  check.psi_solid_world = psi_against(predicted, world_grid(h, world, {}, lo, hi), region, occupied_threshold, res,
+                                      similarity_tolerance_cells)
                               .psi;
   return check;
 }

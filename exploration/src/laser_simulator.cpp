@@ -12,8 +12,7 @@ namespace {
 
 void require(bool ok, const char* field, double value, const char* why) {
   if (!ok) {
-    throw std::invalid_argument(std::string("LaserOptions.") + field + " = " +
-                                std::to_string(value) + ": " + why);
+    throw std::invalid_argument(std::string("LaserOptions.") + field + " = " + std::to_string(value) + ": " + why);
   }
 }
 
@@ -40,8 +39,8 @@ void axis_setup(double g, double d, int& step, double& t_next, double& t_delta) 
 
 void LaserOptions::validate() const {
   require(fov > 0 && fov <= 2 * M_PI + 1e-9, "fov", fov, "must be in (0, 2 pi]");
-  require(angular_resolution > 0 && angular_resolution <= fov, "angular_resolution",
-          angular_resolution, "must be in (0, fov]");
+  require(angular_resolution > 0 && angular_resolution <= fov, "angular_resolution", angular_resolution,
+          "must be in (0, fov]");
   require(max_range > 0 && max_range <= slam::limits::kMaxLaserRange, "max_range", max_range,
           "must be in (0, 1000] m (limits::kMaxLaserRange)");
   require(fov / angular_resolution <= static_cast<double>(slam::limits::kMaxBeams), "angular_resolution",

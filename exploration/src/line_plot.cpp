@@ -27,7 +27,8 @@ void draw_axes(cv::Mat& img, const PlotOptions& o, double x_max) {
   const double xs = tick_step(x_max), ys = tick_step(o.y_max - o.y_min);
   for (double x = 0; x <= x_max + 1e-9; x += xs) {
     cv::line(img, {px(x), kTop}, {px(x), h - kBottom}, grey, 1);
-    cv::putText(img, cv::format("%g", x), {px(x) - 12, h - kBottom + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1, cv::LINE_AA);
+    cv::putText(img, cv::format("%g", x), {px(x) - 12, h - kBottom + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.4, black, 1,
+                cv::LINE_AA);
   }
   for (double y = o.y_min; y <= o.y_max + 1e-9; y += ys) {
     cv::line(img, {kLeft, py(y)}, {w - kRight, py(y)}, grey, 1);
@@ -42,13 +43,12 @@ void draw_axes(cv::Mat& img, const PlotOptions& o, double x_max) {
 }  // namespace
 
 slam::Rgb series_colour(std::size_t i) {
-  static const slam::Rgb kColours[] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {255, 127, 14},
+  static const slam::Rgb kColours[] = {{31, 119, 180},  {214, 39, 40}, {44, 160, 44},   {255, 127, 14},
                                        {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {23, 190, 207}};
   return kColours[i % (sizeof(kColours) / sizeof(kColours[0]))];
 }
 
-void write_line_plot(const std::string& png_path, const std::vector<PlotSeries>& series,
-                     const PlotOptions& o) {
+void write_line_plot(const std::string& png_path, const std::vector<PlotSeries>& series, const PlotOptions& o) {
   cv::Mat img(o.height, o.width, CV_8UC3, cv::Scalar(255, 255, 255));
   double x_max = 1e-9;
   for (const auto& s : series) {
@@ -67,7 +67,8 @@ void write_line_plot(const std::string& png_path, const std::vector<PlotSeries>&
     if (pts.size() > 1) cv::polylines(img, pts, false, bgr(s.colour), 2, cv::LINE_AA);
     const int ly = kTop + 16 + 18 * static_cast<int>(k);
     cv::line(img, {w - kRight - 170, ly - 4}, {w - kRight - 145, ly - 4}, bgr(s.colour), 3);
-    cv::putText(img, s.label, {w - kRight - 140, ly}, cv::FONT_HERSHEY_SIMPLEX, 0.42, cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    cv::putText(img, s.label, {w - kRight - 140, ly}, cv::FONT_HERSHEY_SIMPLEX, 0.42, cv::Scalar(0, 0, 0), 1,
+                cv::LINE_AA);
   }
   if (!cv::imwrite(png_path, img)) throw slam::ParseError(png_path, 0, "", "", "cannot write image");
 }

@@ -5,8 +5,7 @@
 
 namespace lookahead::exploration {
 
-LookaheadMapping::LookaheadMapping(const LookaheadOptions& options, const World& world,
-                                   const slam::GridOptions& grid,
+LookaheadMapping::LookaheadMapping(const LookaheadOptions& options, const World& world, const slam::GridOptions& grid,
                                    std::vector<std::uint8_t> observable)
     : options_(options),
       world_(world),
@@ -52,13 +51,15 @@ std::shared_ptr<const slam::HypothesisMap> LookaheadMapping::deliver(double now)
   if (!p->hypothesis)
     spdlog::debug("t {:.1f}: no hypothesis for ({:.2f}, {:.2f}): {}, best Psi {:.2f}", now, r.x, r.y, r.status, r.psi);
   if (p->hypothesis) {
-    r.truth = check_against_world(
-        *p->hypothesis, world_, observable_, options_.predictor.features.occupied_threshold, 0.1,
-        options_.predictor.similarity_resolution, options_.predictor.similarity_tolerance_cells);
+    r.truth =
+        check_against_world(*p->hypothesis, world_, observable_, options_.predictor.features.occupied_threshold, 0.1,
+                            options_.predictor.similarity_resolution, options_.predictor.similarity_tolerance_cells);
     predicted_.add(*p->hypothesis);
     if (options_.pictures) snapshots_.push_back({records_.size(), map, *p});
-    spdlog::debug("t {:.1f}: hypothesis for ({:.2f}, {:.2f}) Psi {:.2f} ({:.1f} m^2), against the world Psi {:.2f}, "
-                  "{:.0f}% cells right", now, r.x, r.y, r.psi, r.area, r.truth.psi, 100 * r.truth.accuracy());
+    spdlog::debug(
+        "t {:.1f}: hypothesis for ({:.2f}, {:.2f}) Psi {:.2f} ({:.1f} m^2), against the world Psi {:.2f}, "
+        "{:.0f}% cells right",
+        now, r.x, r.y, r.psi, r.area, r.truth.psi, 100 * r.truth.accuracy());
   }
   records_.push_back(r);
   return p->hypothesis;

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "lookahead/exploration/run_log.hpp"
 #include "lookahead/exploration/prediction_targets.hpp"
+#include "lookahead/exploration/run_log.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/exploration/world_source.hpp"
 #include "lookahead/slam/sensor/scan_inserter.hpp"
@@ -17,12 +17,18 @@ namespace lookahead::exploration {
 
 const char* to_string(MissionStatus s) {
   switch (s) {
-    case MissionStatus::kRunning: return "running";
-    case MissionStatus::kCoverageReached: return "coverage_reached";
-    case MissionStatus::kDone: return "done";
-    case MissionStatus::kTrapped: return "trapped";
-    case MissionStatus::kTimeLimit: return "time_limit";
-    case MissionStatus::kCollision: return "collision";
+    case MissionStatus::kRunning:
+      return "running";
+    case MissionStatus::kCoverageReached:
+      return "coverage_reached";
+    case MissionStatus::kDone:
+      return "done";
+    case MissionStatus::kTrapped:
+      return "trapped";
+    case MissionStatus::kTimeLimit:
+      return "time_limit";
+    case MissionStatus::kCollision:
+      return "collision";
   }
   return "unknown";
 }
@@ -44,7 +50,8 @@ constexpr int kOrdinaryTries = 3;
 MissionOptions checked(MissionOptions o) {
   o.validate();
   // The predictive strategy and a filter that uses hypotheses both need predictions made.
-  o.lookahead.enabled = o.lookahead.enabled || make_strategy(o.strategy)->uses_prediction() || o.slam.prediction.enabled;
+  o.lookahead.enabled =
+      o.lookahead.enabled || make_strategy(o.strategy)->uses_prediction() || o.slam.prediction.enabled;
   return o;
 }
 
@@ -97,13 +104,13 @@ slam::Pose2 Mission::estimate() const {
 
 MissionStatus Mission::step() {
   if (status_ != MissionStatus::kRunning) return status_;
-  sense();    // laser and odometry into the map
+  sense();               // laser and odometry into the map
   deliver_prediction();  // a finished hypothesis joins the look-ahead map and the filter
-  refresh();  // costmap, frontiers and the current path, after a map update
-  decide();   // a new target when the old one is reached, explored, blocked or stuck
+  refresh();             // costmap, frontiers and the current path, after a map update
+  decide();              // a new target when the old one is reached, explored, blocked or stuck
   predict_while_idle();  // opt-in: the idle predictor looks ahead of frontiers not chosen yet
-  act();      // pure pursuit -> unicycle in the true world
-  record();   // coverage, paths
+  act();                 // pure pursuit -> unicycle in the true world
+  record();              // coverage, paths
   check_end();
   return status_;
 }
@@ -169,9 +176,8 @@ SkipRule Mission::skip_rule() const {
 
 std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x, double goal_y) {
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(map());
-  const TargetList targets =
-      selection_targets(clusters, goal_x, goal_y, straight_line_from(estimate()),
-                        options_.lookahead.targets_per_selection);
+  const TargetList targets = selection_targets(clusters, goal_x, goal_y, straight_line_from(estimate()),
+                                               options_.lookahead.targets_per_selection);
   for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
   return targets;
 }
@@ -184,9 +190,8 @@ void Mission::predict_while_idle() {
   const slam::OccupancyGrid& m = map();
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(m);
   const TargetList targets = unpredicted_frontier_targets(
-      clusters, m, lookahead_->predicted(), skip_rule(), options_.lookahead.skip_share,
-      predicted_targets_, time_, straight_line_from(estimate()),
-      options_.lookahead.targets_per_selection);
+      clusters, m, lookahead_->predicted(), skip_rule(), options_.lookahead.skip_share, predicted_targets_, time_,
+      straight_line_from(estimate()), options_.lookahead.targets_per_selection);
   if (targets.empty()) return;
   for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
   lookahead_->request(m, targets, time_);
@@ -256,8 +261,10 @@ void Mission::decide() {
     // mission). A spot whose replan fails a second time within the lifetime is a failed
     // goal; once is not (blacklisting at the first failure cost kth_0510034869 its 95 %).
     if (!backtracking_) {
-      if (replan_failures_.contains(goal_->x, goal_->y, time_)) blacklist_.add(goal_->x, goal_->y, time_);
-      else replan_failures_.add(goal_->x, goal_->y, time_);
+      if (replan_failures_.contains(goal_->x, goal_->y, time_))
+        blacklist_.add(goal_->x, goal_->y, time_);
+      else
+        replan_failures_.add(goal_->x, goal_->y, time_);
     }
   }
   select_new_target();
@@ -283,11 +290,11 @@ bool Mission::need_new_path() {
   // On kth_50015848 most goals the stuck clock gave up were being driven to: a path around
   // a wall led away from the goal for the whole 30 s (stuck_clock.hpp).
   if (stuck_clock_.stuck(time_, d, follower_->remaining_length(), path_length_)) {
-    spdlog::debug("t {:.1f}: stuck on ({:.2f}, {:.2f}): {:.2f} m away, {:.2f} m of path left, {:.2f} m driven since "
-                  "the last progress{}{}",
-                  time_, goal_->x, goal_->y, d, follower_->remaining_length(),
-                  stuck_clock_.driven_since_progress(path_length_), squeezing_ ? ", squeezing" : "",
-                  backtracking_ ? ", backtracking" : "");
+    spdlog::debug(
+        "t {:.1f}: stuck on ({:.2f}, {:.2f}): {:.2f} m away, {:.2f} m of path left, {:.2f} m driven since "
+        "the last progress{}{}",
+        time_, goal_->x, goal_->y, d, follower_->remaining_length(), stuck_clock_.driven_since_progress(path_length_),
+        squeezing_ ? ", squeezing" : "", backtracking_ ? ", backtracking" : "");
     blacklist_.add(goal_->x, goal_->y, time_);
     ++stats_.stuck_goals;
     return true;
@@ -304,17 +311,25 @@ bool Mission::goal_predicted() const {
   const slam::OccupancyGrid& m = map();
   for (const FrontierCluster& f : frontiers_.clusters(m)) {
     if (!f.has_goal || std::hypot(f.goal_x - goal_->x, f.goal_y - goal_->y) > kSameGoalRadius) continue;
-    const bool covered =
-        lookahead_->predicted().covered_share(m, f, skip_rule()) >= options_.lookahead.skip_share;
-    if (covered) spdlog::debug("t {:.1f}: goal ({:.2f}, {:.2f}) dropped: predicted on the way", time_, goal_->x, goal_->y);
+    const bool covered = lookahead_->predicted().covered_share(m, f, skip_rule()) >= options_.lookahead.skip_share;
+    if (covered)
+      spdlog::debug("t {:.1f}: goal ({:.2f}, {:.2f}) dropped: predicted on the way", time_, goal_->x, goal_->y);
     return covered;
   }
   return false;
 }
 
 SelectionInputs Mission::selection_inputs() {
-  SelectionInputs in{&map(), &costmap_, &frontiers_, strategy_.get(), &blacklist_, estimate(), time_,
-                     options_.laser.max_range, options_.max_goal_attempts, options_.planner};
+  SelectionInputs in{&map(),
+                     &costmap_,
+                     &frontiers_,
+                     strategy_.get(),
+                     &blacklist_,
+                     estimate(),
+                     time_,
+                     options_.laser.max_range,
+                     options_.max_goal_attempts,
+                     options_.planner};
   in.planner.seed = static_cast<std::uint32_t>(options_.planner.seed + static_cast<std::uint32_t>(stats_.plans));
   in.robot_radius = options_.robot.radius;
   if (lookahead_) {
@@ -452,8 +467,7 @@ void Mission::record() {
       const double occupied = options_.lookahead.predictor.features.occupied_threshold;
       with_predictions = meter_.coverage(map(), [&](double x, double y) {
         const slam::CellIndex c = pm.cells().cell_at(x, y);
-        return pm.predicted(map(), c) && pm.cells().probability(c) < occupied &&
-               !world_.is_occupied(x, y);
+        return pm.predicted(map(), c) && pm.cells().probability(c) < occupied && !world_.is_occupied(x, y);
       });
     }
     curve_.push_back({time_, path_length_, explored, with_predictions});
@@ -465,7 +479,8 @@ void Mission::check_end() {
   // The goal is explored space: a prediction counts once the robot has observed it.
   if (coverage() >= options_.coverage_goal)
     status_ = MissionStatus::kCoverageReached;
-  else if (time_ >= options_.time_limit) status_ = MissionStatus::kTimeLimit;
+  else if (time_ >= options_.time_limit)
+    status_ = MissionStatus::kTimeLimit;
 }
 
 }  // namespace lookahead::exploration

@@ -31,7 +31,8 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v("coverage_goal", o.coverage_goal, "stop at this share of the reachable free area, (0, 1]");
   v("goal_check_period", o.goal_check_period, "the current goal is re-examined this often [s]");
   v("stuck_time", o.stuck_time, "no progress this long blacklists the goal [s]");
-  v("detour_progress", o.detour_progress, "on a detour (path > 10 m and > 2x the distance) a shorter path left is progress");
+  v("detour_progress", o.detour_progress,
+    "on a detour (path > 10 m and > 2x the distance) a shorter path left is progress");
   v("max_goal_attempts", o.max_goal_attempts, "candidates tried per selection before trapped");
   v("metrics_period", o.metrics_period, "coverage is sampled this often [s]");
   v("frame_period", o.frame_period, "animation frame every [s]; 0 = no animation");
@@ -68,16 +69,17 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
     "far side is)");
   v("skip_confidence", o.skip_confidence, "... counting hypotheses with Psi >= this");
   v("skip_share", o.skip_share, "far_side: ... this share of its far side is predicted");
-  v("skip_region_radius", o.skip_region_radius,
-    "region: ... its region within this is predicted [m], > 0");
-  v("skip_region_wall_gap", o.skip_region_wall_gap, "... a wall's unknown gaps up to this wide (and the robot's diameter) close the region [m]");
+  v("skip_region_radius", o.skip_region_radius, "region: ... its region within this is predicted [m], > 0");
+  v("skip_region_wall_gap", o.skip_region_wall_gap,
+    "... a wall's unknown gaps up to this wide (and the robot's diameter) close the region [m]");
   v("known_boundary", o.known_boundary, "... and no region reaches beyond the world's extent (Fig. 7(d))");
-  v("skip_wall_slivers", o.skip_wall_slivers, "... and skip frontiers whose region is a closed pocket of min_predicted_area");
-  v("targets_per_selection", o.targets_per_selection, "frontiers predicted per selection: the target, then the nearest");
+  v("skip_wall_slivers", o.skip_wall_slivers,
+    "... and skip frontiers whose region is a closed pocket of min_predicted_area");
+  v("targets_per_selection", o.targets_per_selection,
+    "frontiers predicted per selection: the target, then the nearest");
   v("predict_while_idle", o.predict_while_idle, "an idle predictor predicts the nearest frontiers not covered yet");
   v("repredict_after", o.repredict_after, "... a frontier again after this long [s, simulated]");
-  v("pictures", o.pictures,
-    "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");
+  v("pictures", o.pictures, "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");
   predictor::visit_predictor_keys(o.predictor, v);
 }
 
@@ -92,18 +94,15 @@ void visit_planning_sections(MissionOptions& o, V&& v) {
   v("goal_tolerance", o.planner.goal_tolerance, "a path may end this close to the goal [m]");
   v("simplify", o.planner.simplify, "shortcut and smooth the found path");
   v("unknown_is_free", o.planner.costmap.unknown_is_free, "plan through never-observed cells");
-  v("occupied_threshold", o.planner.costmap.occupied_threshold,
-    "occupancy that blocks a cell, (0.5, 1]");
+  v("occupied_threshold", o.planner.costmap.occupied_threshold, "occupancy that blocks a cell, (0.5, 1]");
   v.section("follower");
   v("lookahead", o.follower.lookahead, "pure-pursuit look-ahead arc length [m]");
-  v("rotate_in_place_angle", o.follower.rotate_in_place_angle,
-    "heading error that stops forward motion [rad]");
+  v("rotate_in_place_angle", o.follower.rotate_in_place_angle, "heading error that stops forward motion [rad]");
   v("goal_tolerance", o.follower.goal_tolerance, "goal reached within [m]");
   v.section("frontiers");
   v("min_cluster_cells", o.frontiers.min_cluster_cells, "smaller frontier clusters are noise");
   v("cluster_gap", o.frontiers.cluster_gap, "frontier cells this many cells apart join one cluster");
-  v("goal_search_radius", o.frontiers.goal_search_radius,
-    "a goal may move this far from its cluster [m]");
+  v("goal_search_radius", o.frontiers.goal_search_radius, "a goal may move this far from its cluster [m]");
   v.section("blacklist");
   v("radius", o.blacklist.radius, "goals this close to a failed one are skipped [m]");
   v("lifetime", o.blacklist.lifetime, "mission seconds an entry lasts");
@@ -121,8 +120,8 @@ using slam::config::fail_at;
 
 // The slam section goes to the SLAM library's loader as text of its own, padded so that its
 // errors carry this file's line numbers.
-slam::RbpfOptions parse_slam_section(const std::string& text, const YAML::Node& node,
-                                     const std::string& source, const slam::RbpfOptions& base) {
+slam::RbpfOptions parse_slam_section(const std::string& text, const YAML::Node& node, const std::string& source,
+                                     const slam::RbpfOptions& base) {
   if (!node.IsMap()) fail_at(source, node, "slam", "must be a map");
   const int line = node.Mark().line, column = node.Mark().column;
   if (node.size() == 0) return base;
@@ -131,8 +130,7 @@ slam::RbpfOptions parse_slam_section(const std::string& text, const YAML::Node& 
   }
   YAML::Emitter flow;  // a flow map may span lines; re-emitted on one, errors name its first
   flow << YAML::Flow << node;
-  return slam::parse_rbpf_options(std::string(static_cast<std::size_t>(line), '\n') + flow.c_str(),
-                                  source, base);
+  return slam::parse_rbpf_options(std::string(static_cast<std::size_t>(line), '\n') + flow.c_str(), source, base);
 }
 
 }  // namespace
@@ -164,8 +162,7 @@ std::string yaml_block_text(const std::string& text, int line, int column) {
   return out;
 }
 
-MissionOptions parse_mission_options(const std::string& yaml, const std::string& source,
-                                     const MissionOptions& base) {
+MissionOptions parse_mission_options(const std::string& yaml, const std::string& source, const MissionOptions& base) {
   const YAML::Node root = slam::config::parse_sections(yaml, source);
   MissionOptions o = base;
   if (root.IsNull()) return o;
@@ -193,8 +190,7 @@ std::string dump_mission_options(const MissionOptions& options) {
   std::string slam_text = slam::dump_rbpf_options(options.slam), indented;
   std::istringstream in(slam_text);
   for (std::string l; std::getline(in, l);) indented += "  " + l + "\n";
-  return "# lookahead mission defaults (lookahead config dump mission): every key, with its unit\n" +
-         d.str() +
+  return "# lookahead mission defaults (lookahead config dump mission): every key, with its unit\n" + d.str() +
          "# RBPF options in the config/slam format. Derived, whatever is written here:\n"
          "# filter.seed from mission.seed, likelihood.max_range from laser.max_range.\n"
          "slam:\n" +

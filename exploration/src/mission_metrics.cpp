@@ -37,8 +37,8 @@ double CoverageMeter::coverage(const slam::OccupancyGrid& map,
 std::array<Milestone, 3> coverage_milestones(const std::vector<CoverageSample>& curve) {
   std::array<Milestone, 3> m{{{0.90}, {0.95}, {0.99}}};
   for (Milestone& ms : m) {
-    const auto it = std::find_if(curve.begin(), curve.end(),
-                                 [&](const CoverageSample& s) { return s.coverage >= ms.level; });
+    const auto it =
+        std::find_if(curve.begin(), curve.end(), [&](const CoverageSample& s) { return s.coverage >= ms.level; });
     if (it == curve.end()) continue;
     ms.reached = true;
     ms.time = it->time;

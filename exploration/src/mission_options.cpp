@@ -55,7 +55,7 @@ MissionOptions MissionOptions::defaults() {
   // (kth_50010536_PLAN3 utility sat at 86 % for 3000 s; README, door flicker). A wall is hit
   // scan after scan and passes 0.8 (log-odds 1.39) in 0.2 s.
   o.planner.costmap.occupied_threshold = 0.8;
-  o.follower.lookahead = 0.35;               // short: cut corners less in doorways
+  o.follower.lookahead = 0.35;  // short: cut corners less in doorways
   // The 1 deg beams of the 8 m laser end 0.14 m (2.8 cells) apart: at the far end of a
   // corridor longer than the range the frontier is a row of specks 2-3 cells apart, and
   // with a gap of 1 none of them makes a cluster (the mission ended "done" at 15 % of the

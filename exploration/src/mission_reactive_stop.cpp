@@ -39,8 +39,7 @@ bool Mission::path_ahead_blocked(const planner::VelocityCommand& cmd) const {
   // Elsewhere: the corridor the body sweeps in the next step plus the stop distance, in the
   // laser (= robot) frame, 2 cm wider than the body: end points inside it are walls about to
   // be hit.
-  return corridor_holds_return(last_scan_, options_.robot.radius + kStopSideClearance,
-                               options_.robot.radius + travel);
+  return corridor_holds_return(last_scan_, options_.robot.radius + kStopSideClearance, options_.robot.radius + travel);
 }
 
 }  // namespace lookahead::exploration

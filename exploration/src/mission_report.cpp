@@ -48,9 +48,7 @@ MissionSummary summarize(const Mission& m, const std::string& world_name, double
 namespace {
 
 // A time that may never have come (< 0): null in the JSON.
-nlohmann::json optional_time(double t) {
-  return t >= 0 ? nlohmann::json(t) : nlohmann::json(nullptr);
-}
+nlohmann::json optional_time(double t) { return t >= 0 ? nlohmann::json(t) : nlohmann::json(nullptr); }
 
 // Each hypothesis with where it came from and how the world scored it (for diagnosis).
 nlohmann::json hypotheses_json(const std::vector<PredictionRecord>& records) {
@@ -130,9 +128,10 @@ std::string to_json(const MissionSummary& s) {
   j["map_precision"] = s.quality.precision;
   j["map_recall"] = s.quality.recall;
   j["collisions"] = s.statistics.collisions;
-  j["planner"] = {{"selections", s.statistics.selections}, {"plans", s.statistics.plans},
-                  {"failures", s.statistics.plan_failures}, {"replans", s.statistics.replans},
-                  {"stuck_goals", s.statistics.stuck_goals}, {"forgiven_goals", s.statistics.forgiven_goals}, {"grid_fallbacks", s.statistics.grid_fallbacks}, {"planning_time_s", s.statistics.planning_time}};
+  j["planner"] = {{"selections", s.statistics.selections},         {"plans", s.statistics.plans},
+                  {"failures", s.statistics.plan_failures},        {"replans", s.statistics.replans},
+                  {"stuck_goals", s.statistics.stuck_goals},       {"forgiven_goals", s.statistics.forgiven_goals},
+                  {"grid_fallbacks", s.statistics.grid_fallbacks}, {"planning_time_s", s.statistics.planning_time}};
   j["safety_stops"] = s.statistics.safety_stops;
   j["backtracks"] = s.statistics.backtracks;
   j["squeezes"] = s.statistics.squeezes;
@@ -161,7 +160,8 @@ void write_mission_outputs(const Mission& m, const MissionSummary& s, const std:
                   {"coverage of the reachable free area", "simulated time [s]", "coverage", 800, 450, 0.0, 1.0});
   std::vector<slam::StampedPose> traj;
   const double dt = m.options().laser.period() * 5;  // one pose kept every 5 scans
-  for (std::size_t i = 0; i < m.estimated_path().size(); ++i) traj.push_back({m.options().laser.period() + dt * static_cast<double>(i), m.estimated_path()[i]});
+  for (std::size_t i = 0; i < m.estimated_path().size(); ++i)
+    traj.push_back({m.options().laser.period() + dt * static_cast<double>(i), m.estimated_path()[i]});
   slam::write_trajectory(dir + "/trajectory.txt", traj);
   // The figures, then where they come from and the whole effective configuration.
   nlohmann::json j = nlohmann::json::parse(to_json(s));

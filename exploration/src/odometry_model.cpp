@@ -12,8 +12,8 @@ void OdometryNoiseOptions::validate() const {
   const char* names[] = {"srr", "srt", "str", "stt"};
   for (int i = 0; i < 4; ++i) {
     if (!(values[i] >= 0)) {
-      throw std::invalid_argument(std::string("OdometryNoiseOptions.") + names[i] + " = " +
-                                  std::to_string(values[i]) + ": must be >= 0");
+      throw std::invalid_argument(std::string("OdometryNoiseOptions.") + names[i] + " = " + std::to_string(values[i]) +
+                                  ": must be >= 0");
     }
   }
 }

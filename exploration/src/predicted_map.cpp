@@ -21,8 +21,10 @@ int raw_at_least(double p) {
   if (!passes(hi)) return hi + 1;
   while (lo < hi) {
     const int mid = lo + (hi - lo) / 2;
-    if (passes(mid)) hi = mid;
-    else lo = mid + 1;
+    if (passes(mid))
+      hi = mid;
+    else
+      lo = mid + 1;
   }
   return lo;
 }

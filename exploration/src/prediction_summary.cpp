@@ -91,9 +91,8 @@ void summarize_skip_protocol(const Mission& m, PredictionSummary& s) {
   for (const double t : {s.rest_predicted_time, s.time_to_goal_with_predictions})
     if (t >= 0 && (s.skip_protocol_end < 0 || t < s.skip_protocol_end)) s.skip_protocol_end = t;
   if (s.skip_protocol_end < 0) return;
-  const auto end = std::find_if(curve.begin(), curve.end(), [&](const CoverageSample& c) {
-    return c.time >= s.skip_protocol_end;
-  });
+  const auto end =
+      std::find_if(curve.begin(), curve.end(), [&](const CoverageSample& c) { return c.time >= s.skip_protocol_end; });
   if (end == curve.end()) return;
   s.coverage_with_predictions_at_skip_end = end->coverage_with_predictions;
   s.path_at_skip_end = end->path_length;

@@ -13,8 +13,7 @@ namespace {
 
 void require(bool ok, const char* field, double value, const char* why) {
   if (!ok) {
-    throw std::invalid_argument(std::string("RobotOptions.") + field + " = " +
-                                std::to_string(value) + ": " + why);
+    throw std::invalid_argument(std::string("RobotOptions.") + field + " = " + std::to_string(value) + ": " + why);
   }
 }
 
@@ -51,8 +50,7 @@ slam::Pose2 integrate_arc(const slam::Pose2& p, double v, double omega, double d
   }
   const double r = v / omega;  // signed turning radius
   return {p.x + r * (std::sin(p.theta + dtheta) - std::sin(p.theta)),
-          p.y - r * (std::cos(p.theta + dtheta) - std::cos(p.theta)),
-          slam::normalize_angle(p.theta + dtheta)};
+          p.y - r * (std::cos(p.theta + dtheta) - std::cos(p.theta)), slam::normalize_angle(p.theta + dtheta)};
 }
 
 Robot::Robot(const World& world, const slam::Pose2& start, const RobotOptions& options)

@@ -71,8 +71,7 @@ void write_curve(const fs::path& path, const std::vector<CoverageSample>& curve)
   std::ofstream out(path);
   out << "time_s,path_length_m,coverage\n";
   out.precision(17);
-  for (const CoverageSample& c : curve)
-    out << c.time << ',' << c.path_length << ',' << c.coverage << '\n';
+  for (const CoverageSample& c : curve) out << c.time << ',' << c.path_length << ',' << c.coverage << '\n';
   if (!out) throw slam::ParseError(path.string(), 0, "", "", "cannot write");
 }
 
@@ -85,8 +84,7 @@ std::vector<CoverageSample> read_curve(const fs::path& path) {
     CoverageSample c;
     char comma1 = 0, comma2 = 0;
     std::istringstream row(line);
-    if (!(row >> c.time >> comma1 >> c.path_length >> comma2 >> c.coverage))
-      throw std::runtime_error("bad row");
+    if (!(row >> c.time >> comma1 >> c.path_length >> comma2 >> c.coverage)) throw std::runtime_error("bad row");
     curve.push_back(c);
   }
   return curve;
@@ -119,8 +117,7 @@ void write_text(const fs::path& path, const std::string& text) {
 // nullopt when `stop` was set while it ran: an interrupted study reports what finished
 // before the interruption, so a run ending after it is not published.
 std::optional<StudyRunResult> execute_run(const GeneratedWorld& world, const std::string& label,
-                                          const MissionOptions& options,
-                                          const std::string& config_text,
+                                          const MissionOptions& options, const std::string& config_text,
                                           const std::string& mission_id, const fs::path& dir,
                                           const std::atomic<bool>* stop) {
   Mission mission(world.world, world.start, options);
@@ -133,8 +130,7 @@ std::optional<StudyRunResult> execute_run(const GeneratedWorld& world, const std
   r.curve = mission.coverage_curve();
   r.mission_id = mission_id;
   r.plan_free_area_m2 = world.world.free_area_m2();
-  if (r.summary.prediction.enabled)
-    r.predicted_coverage = r.summary.prediction.coverage_with_predictions;
+  if (r.summary.prediction.enabled) r.predicted_coverage = r.summary.prediction.coverage_with_predictions;
   // Unique per process: a resubmitted array task may meet a folder its killed predecessor
   // left half-written.
   fs::path staging = dir;
@@ -146,8 +142,7 @@ std::optional<StudyRunResult> execute_run(const GeneratedWorld& world, const std
   std::ofstream config(staging / "run_config.yaml");
   config << config_text;
   config.close();
-  if (!config)
-    throw slam::ParseError((staging / "run_config.yaml").string(), 0, "", "", "cannot write");
+  if (!config) throw slam::ParseError((staging / "run_config.yaml").string(), 0, "", "", "cannot write");
   if (stop && stop->load()) {
     fs::remove_all(staging);
     return std::nullopt;
@@ -158,8 +153,7 @@ std::optional<StudyRunResult> execute_run(const GeneratedWorld& world, const std
 }
 
 // The worlds the `needed` runs use; the others stay empty.
-std::vector<std::optional<GeneratedWorld>> load_worlds(const StudySpec& spec,
-                                                       const std::vector<StudyRun>& runs,
+std::vector<std::optional<GeneratedWorld>> load_worlds(const StudySpec& spec, const std::vector<StudyRun>& runs,
                                                        const std::vector<std::size_t>& needed) {
   std::vector<std::optional<GeneratedWorld>> worlds(spec.worlds.size());
   for (const std::size_t i : needed) {
@@ -174,21 +168,17 @@ std::vector<std::optional<GeneratedWorld>> load_worlds(const StudySpec& spec,
   return worlds;
 }
 
-std::string run_dir(const StudySpec& spec, const PlannedMission& m) {
-  return spec.out + "/runs/" + m.folder;
-}
+std::string run_dir(const StudySpec& spec, const PlannedMission& m) { return spec.out + "/runs/" + m.folder; }
 
 // Finished runs read back into `result`; returns the indices among `candidates` to run.
 std::vector<std::size_t> read_back(const StudySpec& spec, const std::vector<PlannedMission>& plan,
-                                   const std::vector<std::size_t>& candidates,
-                                   StudyResult& result) {
+                                   const std::vector<std::size_t>& candidates, StudyResult& result) {
   result.runs.resize(plan.size());
   std::vector<std::size_t> pending;
   std::vector<bool> candidate(plan.size(), false);
   for (const std::size_t i : candidates) candidate[i] = true;
   for (std::size_t i = 0; i < plan.size(); ++i) {
-    auto done =
-        read_finished_run(run_dir(spec, plan[i]), run_config_text(spec, plan[i].run, plan[i].id));
+    auto done = read_finished_run(run_dir(spec, plan[i]), run_config_text(spec, plan[i].run, plan[i].id));
     if (done) {
       result.runs[i] = std::move(*done);
       ++result.reused;
@@ -223,28 +213,23 @@ MissionOptions run_options(const StudySpec& spec, const StudyRun& run) {
   return o;
 }
 
-std::string run_config_text(const StudySpec& spec, const StudyRun& run,
-                            const std::string& mission_id) {
+std::string run_config_text(const StudySpec& spec, const StudyRun& run, const std::string& mission_id) {
   std::string id = mission_id;
   if (id.empty()) {
     for (const PlannedMission& m : plan_missions(spec)) {
-      if (m.run.world == run.world && m.run.strategy == run.strategy && m.run.seed == run.seed)
-        id = m.id;
+      if (m.run.world == run.world && m.run.strategy == run.strategy && m.run.seed == run.seed) id = m.id;
     }
   }
   const WorldSpec& w = spec.worlds.at(run.world).spec;
-  std::string text =
-      fmt::format("# mission id: {}\n# world: {}, resolution {}, pixel rule {}, seed {}", id,
-                  w.name, w.image_resolution, w.pixel_rule, w.seed);
+  std::string text = fmt::format("# mission id: {}\n# world: {}, resolution {}, pixel rule {}, seed {}", id, w.name,
+                                 w.image_resolution, w.pixel_rule, w.seed);
   if (w.start) text += fmt::format(", start [{}, {}, {}]", w.start->x, w.start->y, w.start->theta);
   return text + "\n" + dump_mission_options(run_options(spec, run));
 }
 
-std::optional<StudyRunResult> read_finished_run(const std::string& dir,
-                                                const std::string& config_text) {
+std::optional<StudyRunResult> read_finished_run(const std::string& dir, const std::string& config_text) {
   const fs::path d(dir);
-  if (!fs::exists(d / "run.json") || read_text(d / "run_config.yaml") != config_text)
-    return std::nullopt;
+  if (!fs::exists(d / "run.json") || read_text(d / "run_config.yaml") != config_text) return std::nullopt;
   try {
     StudyRunResult r;
     r.finished = true;
@@ -270,15 +255,13 @@ StudyResult collect_study(const StudySpec& spec) {
   return result;
 }
 
-StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress,
-                      unsigned workers) {
+StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress, unsigned workers) {
   StudyRunOptions options;
   options.workers = workers;
   return run_study(spec, progress, options);
 }
 
-StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress,
-                      const StudyRunOptions& options) {
+StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress, const StudyRunOptions& options) {
   const std::vector<PlannedMission> plan = plan_missions(spec);
   std::vector<std::size_t> candidates = options.only.value_or(std::vector<std::size_t>{});
   if (!options.only) {
@@ -306,9 +289,9 @@ StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progre
         state.in_flight.push_back(m.folder);
       }
       try {
-        std::optional<StudyRunResult> r = execute_run(
-            *worlds[m.run.world], spec.worlds[m.run.world].label, run_options(spec, m.run),
-            run_config_text(spec, m.run, m.id), m.id, run_dir(spec, m), options.stop);
+        std::optional<StudyRunResult> r =
+            execute_run(*worlds[m.run.world], spec.worlds[m.run.world].label, run_options(spec, m.run),
+                        run_config_text(spec, m.run, m.id), m.id, run_dir(spec, m), options.stop);
         const std::lock_guard<std::mutex> lock(mutex);
         if (!r) break;
         result.runs[pending[k]] = std::move(*r);
@@ -325,8 +308,7 @@ StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progre
       }
     }
   };
-  const unsigned hw =
-      options.workers ? options.workers : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned hw = options.workers ? options.workers : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < std::min<std::size_t>(hw, pending.size()); ++t) pool.emplace_back(work);
   for (std::thread& t : pool) t.join();

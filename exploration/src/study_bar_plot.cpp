@@ -46,8 +46,7 @@ void draw_frame(cv::Mat& img, const BarChart& c, double top) {
   text(img, c.y_label, {8, kTop - 10}, 0.45);
   for (std::size_t s = 0; s < c.series.size(); ++s) {
     const int ly = kTop + 16 + 18 * static_cast<int>(s);
-    cv::rectangle(img, {w - kRight + 10, ly - 10}, {w - kRight + 30, ly}, bgr(series_colour(s)),
-                  cv::FILLED);
+    cv::rectangle(img, {w - kRight + 10, ly - 10}, {w - kRight + 30, ly}, bgr(series_colour(s)), cv::FILLED);
     text(img, c.series[s], {w - kRight + 36, ly});
   }
 }
@@ -55,8 +54,7 @@ void draw_frame(cv::Mat& img, const BarChart& c, double top) {
 void draw_group(cv::Mat& img, const BarChart& c, std::size_t g, double top) {
   const int h = img.rows, plot_w = img.cols - kLeft - kRight;
   const double group_w = static_cast<double>(plot_w) / static_cast<double>(c.groups.size());
-  const double bar_w =
-      group_w * 0.8 / static_cast<double>(std::max<std::size_t>(1, c.series.size()));
+  const double bar_w = group_w * 0.8 / static_cast<double>(std::max<std::size_t>(1, c.series.size()));
   const double x0 = kLeft + group_w * static_cast<double>(g) + group_w * 0.1;
   const auto py = [&](double y) {
     return h - kBottom - static_cast<int>(std::clamp(y, 0.0, top) / top * (h - kTop - kBottom));
@@ -70,21 +68,18 @@ void draw_group(cv::Mat& img, const BarChart& c, std::size_t g, double top) {
       text(img, "n/a", {left, h - kBottom - 6}, 0.35);
       continue;
     }
-    cv::rectangle(img, {left, py(b.value)}, {right, h - kBottom}, bgr(series_colour(s)),
-                  cv::FILLED);
+    cv::rectangle(img, {left, py(b.value)}, {right, h - kBottom}, bgr(series_colour(s)), cv::FILLED);
     if (b.whisker > 0) {
       const int lo = py(b.value - b.whisker), hi = py(b.value + b.whisker);
       cv::line(img, {mid, lo}, {mid, hi}, kBlack, 1, cv::LINE_AA);
       cv::line(img, {mid - 4, lo}, {mid + 4, lo}, kBlack, 1);
       cv::line(img, {mid - 4, hi}, {mid + 4, hi}, kBlack, 1);
     }
-    if (b.count >= 0)
-      text(img, "n=" + std::to_string(b.count), {left, py(b.value + b.whisker) - 4}, 0.35);
+    if (b.count >= 0) text(img, "n=" + std::to_string(b.count), {left, py(b.value + b.whisker) - 4}, 0.35);
   }
   // Long labels (KTH plan numbers) are cut to what fits under the group.
   const std::size_t fits = static_cast<std::size_t>(std::max(3.0, group_w / 7.5));
-  const std::string label =
-      c.groups[g].size() > fits ? c.groups[g].substr(0, fits - 1) + "~" : c.groups[g];
+  const std::string label = c.groups[g].size() > fits ? c.groups[g].substr(0, fits - 1) + "~" : c.groups[g];
   text(img, label, {static_cast<int>(x0), h - kBottom + 18}, 0.38);
 }
 
@@ -95,8 +90,7 @@ void write_bar_chart(const std::string& png_path, const BarChart& c) {
   const double top = axis_top(c);
   draw_frame(img, c, top);
   for (std::size_t g = 0; g < c.groups.size() && g < c.bars.size(); ++g) draw_group(img, c, g, top);
-  if (!cv::imwrite(png_path, img))
-    throw slam::ParseError(png_path, 0, "", "", "cannot write image");
+  if (!cv::imwrite(png_path, img)) throw slam::ParseError(png_path, 0, "", "", "cannot write image");
 }
 
 }  // namespace lookahead::exploration

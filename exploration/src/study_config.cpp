@@ -13,8 +13,8 @@
 
 #include "lookahead/exploration/mission_config.hpp"
 #include "lookahead/exploration/study_keys.hpp"
-#include "lookahead/slam/limits/input_limits.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "lookahead/slam/limits/input_limits.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -68,18 +68,16 @@ class StudyParser {
       fail(n, key, "bad value");
     }
   }
-  [[noreturn]] void fail(const YAML::Node& n, const std::string& key,
-                         const std::string& why) const {
-    throw slam::ParseError(source_, static_cast<std::size_t>(n.Mark().line + 1), key,
-                           n.IsScalar() ? n.Scalar() : "", why);
+  [[noreturn]] void fail(const YAML::Node& n, const std::string& key, const std::string& why) const {
+    throw slam::ParseError(source_, static_cast<std::size_t>(n.Mark().line + 1), key, n.IsScalar() ? n.Scalar() : "",
+                           why);
   }
   YAML::Node required(const YAML::Node& map, const char* key, const YAML::Node& where) const {
     const YAML::Node n = map[key];
     if (!n) fail(where, key, "missing");
     return n;
   }
-  void check_keys(const YAML::Node& map, const std::string& prefix,
-                  const std::set<std::string>& known) const {
+  void check_keys(const YAML::Node& map, const std::string& prefix, const std::set<std::string>& known) const {
     if (!map.IsMap()) fail(map, prefix.empty() ? "study" : prefix, "must be a map");
     for (const auto& kv : map) {
       const std::string key = kv.first.as<std::string>();
@@ -89,8 +87,7 @@ class StudyParser {
   static bool is_label(const std::string& s) {
     if (s.empty()) return false;
     for (const char c : s) {
-      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-')
-        return false;
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-') return false;
     }
     return true;
   }
@@ -121,13 +118,11 @@ class StudyParser {
     const std::string name = get<std::string>(required(w, "name", w), "worlds.name");
     const bool generated = name == "office" || name == "maze" || name == "corridor";
     sw.spec.name = generated ? name : (fs::path(base_dir_) / name).lexically_normal().string();
-    sw.label = generated ? name
-                         : fs::path(name).filename().string().substr(
-                               0, fs::path(name).filename().string().find('.'));
+    sw.label =
+        generated ? name : fs::path(name).filename().string().substr(0, fs::path(name).filename().string().find('.'));
     if (w["label"]) sw.label = get<std::string>(w["label"], "worlds.label");
     if (!is_label(sw.label))
-      fail(w["label"] ? w["label"] : w, "worlds.label",
-           "use letters, digits, '.', '_' and '-' only");
+      fail(w["label"] ? w["label"] : w, "worlds.label", "use letters, digits, '.', '_' and '-' only");
     if (w["resolution"]) {
       sw.spec.image_resolution = get<double>(w["resolution"], "worlds.resolution");
       if (!(sw.spec.image_resolution > 0)) fail(w["resolution"], "worlds.resolution", "must be > 0");
@@ -150,8 +145,7 @@ class StudyParser {
   }
 
   std::vector<std::string> strategies(const YAML::Node& list) const {
-    if (!list.IsSequence() || list.size() == 0)
-      fail(list, "strategies", "must be a non-empty list");
+    if (!list.IsSequence() || list.size() == 0) fail(list, "strategies", "must be a non-empty list");
     std::vector<std::string> out;
     for (const YAML::Node& s : list) {
       out.push_back(get<std::string>(s, "strategies"));
@@ -224,17 +218,15 @@ MissionOptions StudyParser::mission(const YAML::Node& root) const {
     if (n && (always_owned || root[outer]))
       fail(n, std::string("mission.") + inner, std::string("set by the study's ") + outer);
   }
-  const std::string text =
-      block.Style() == YAML::EmitterStyle::Flow
-          ? std::string(static_cast<std::size_t>(block.Mark().line), '\n') + YAML::Dump(block)
-          : yaml_block_text(yaml_, block.Mark().line, block.Mark().column);
+  const std::string text = block.Style() == YAML::EmitterStyle::Flow
+                               ? std::string(static_cast<std::size_t>(block.Mark().line), '\n') + YAML::Dump(block)
+                               : yaml_block_text(yaml_, block.Mark().line, block.Mark().column);
   return parse_mission_options(text, source_, o);
 }
 
 }  // namespace
 
-StudySpec parse_study(const std::string& yaml, const std::string& source,
-                      const std::string& base_dir) {
+StudySpec parse_study(const std::string& yaml, const std::string& source, const std::string& base_dir) {
   YAML::Node root;
   try {
     root = YAML::Load(yaml);
@@ -242,8 +234,7 @@ StudySpec parse_study(const std::string& yaml, const std::string& source,
     throw slam::ParseError(source, static_cast<std::size_t>(e.mark.line + 1), "", "", e.msg);
   }
   if (!root.IsMap())
-    throw slam::ParseError(source, 1, "", "",
-                           "a study file is a map (name, worlds, strategies, seeds...)");
+    throw slam::ParseError(source, 1, "", "", "a study file is a map (name, worlds, strategies, seeds...)");
   return StudyParser(yaml, source, base_dir).parse(root);
 }
 

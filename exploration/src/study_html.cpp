@@ -40,8 +40,8 @@ std::string thumbnails_html(const StudySpec& spec, const StudyResult& result, st
           "<figure><a href=\"{0}\"><img class=\"run-map\" src=\"{0}\" alt=\"map of {1}\" "
           "loading=\"lazy\"></a><figcaption>{2} seed {3}<br>{4}, coverage {5:.3f}</figcaption>"
           "</figure>\n",
-          html_escape(map), html_escape(folder), html_escape(strategy), r->summary.seed,
-          html_escape(r->summary.status), r->summary.coverage);
+          html_escape(map), html_escape(folder), html_escape(strategy), r->summary.seed, html_escape(r->summary.status),
+          r->summary.coverage);
     }
   }
   return h + "</div>\n";
@@ -49,16 +49,13 @@ std::string thumbnails_html(const StudySpec& spec, const StudyResult& result, st
 
 std::string world_html(const StudySpec& spec, const StudyResult& result, std::size_t w) {
   const std::string label = html_escape(spec.worlds[w].label);
-  std::string h = "<h2 id=\"world-" + label + "\">" + label + "</h2>\n" +
-                  table_html(strategy_table(spec, result, w), "strategies");
+  std::string h =
+      "<h2 id=\"world-" + label + "\">" + label + "</h2>\n" + table_html(strategy_table(spec, result, w), "strategies");
   if (spec.strategies.size() > 1) {
-    h += "<h3>Welch's t-test (runs that reached 95 %)</h3>\n" +
-         table_html(welch_table(spec, result, w), "welch") +
-         "<h3>Paired on the seed (time to 95 %)</h3>\n" +
-         table_html(paired_table(spec, result, w), "paired");
+    h += "<h3>Welch's t-test (runs that reached 95 %)</h3>\n" + table_html(welch_table(spec, result, w), "welch") +
+         "<h3>Paired on the seed (time to 95 %)</h3>\n" + table_html(paired_table(spec, result, w), "paired");
   }
-  h += fmt::format("<p><img class=\"plot\" src=\"coverage_{0}.png\" alt=\"coverage of {0}\"></p>\n",
-                   label);
+  h += fmt::format("<p><img class=\"plot\" src=\"coverage_{0}.png\" alt=\"coverage of {0}\"></p>\n", label);
   return h + "<h3>Maps of the runs</h3>\n" + thumbnails_html(spec, result, w);
 }
 
@@ -92,11 +89,9 @@ std::string html_escape(const std::string& text) {
 
 std::string study_report_html(const StudySpec& spec, const StudyResult& result) {
   const std::string name = html_escape(spec.name);
-  std::string h =
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head><meta charset=\"utf-8\">\n<title>Study " + name +
-      "</title>\n<style>" + kStyle + "</style></head>\n<body>\n<h1>Study " + name + "</h1>\n";
-  h += fmt::format("<p id=\"overall\"><strong>{}</strong></p>\n",
-                   html_escape(overall_line(spec, result)));
+  std::string h = "<!DOCTYPE html>\n<html lang=\"en\">\n<head><meta charset=\"utf-8\">\n<title>Study " + name +
+                  "</title>\n<style>" + kStyle + "</style></head>\n<body>\n<h1>Study " + name + "</h1>\n";
+  h += fmt::format("<p id=\"overall\"><strong>{}</strong></p>\n", html_escape(overall_line(spec, result)));
   h += table_html(status_table(spec, result), "status");
   if (const auto missing = missing_runs(spec, result); !missing.empty()) {
     h += "<p>Not finished:</p>\n<ul class=\"missing\">\n";

@@ -16,9 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool is_generated(const std::string& name) {
-  return name == "office" || name == "maze" || name == "corridor";
-}
+bool is_generated(const std::string& name) { return name == "office" || name == "maze" || name == "corridor"; }
 
 std::string hex(std::uint64_t v) { return fmt::format("{:016x}", v); }
 
@@ -58,14 +56,12 @@ std::vector<std::string> world_fingerprints(const StudySpec& spec) {
   return out;
 }
 
-std::vector<PlannedMission> plan_missions(const StudySpec& spec,
-                                          const std::vector<std::string>& fingerprints) {
+std::vector<PlannedMission> plan_missions(const StudySpec& spec, const std::vector<std::string>& fingerprints) {
   std::vector<PlannedMission> plan;
   for (const StudyRun& run : plan_runs(spec)) {
     const WorldSpec& w = spec.worlds[run.world].spec;
-    std::string inputs =
-        fingerprints.at(run.world) + fmt::format("\nresolution {}\npixel rule {}\nseed {}\n",
-                                                 w.image_resolution, w.pixel_rule, w.seed);
+    std::string inputs = fingerprints.at(run.world) + fmt::format("\nresolution {}\npixel rule {}\nseed {}\n",
+                                                                  w.image_resolution, w.pixel_rule, w.seed);
     if (w.start) inputs += fmt::format("start {} {} {}\n", w.start->x, w.start->y, w.start->theta);
     inputs += dump_mission_options(run_options(spec, run));
     plan.push_back({run, hex(fnv1a64(inputs)), run_id(spec, run)});
@@ -81,8 +77,8 @@ std::string plan_csv(const StudySpec& spec, const std::vector<PlannedMission>& p
   std::string csv = "index,mission_id,world,strategy,seed,folder\n";
   for (std::size_t i = 0; i < plan.size(); ++i) {
     const PlannedMission& m = plan[i];
-    csv += fmt::format("{},{},{},{},{},{}\n", i, m.id, spec.worlds[m.run.world].label,
-                       m.run.strategy, m.run.seed, m.folder);
+    csv += fmt::format("{},{},{},{},{},{}\n", i, m.id, spec.worlds[m.run.world].label, m.run.strategy, m.run.seed,
+                       m.folder);
   }
   return csv;
 }
@@ -104,8 +100,7 @@ void check_plan(const StudySpec& spec, const std::vector<PlannedMission>& plan) 
   std::vector<std::string> written;
   const std::string path = plan_path(spec);
   if (const std::string why = read_lines_of(path, written); !why.empty())
-    throw slam::ParseError(path, 0, "", "",
-                           why + ": run `lookahead study plan " + spec.source + "` first");
+    throw slam::ParseError(path, 0, "", "", why + ": run `lookahead study plan " + spec.source + "` first");
   std::istringstream expected(plan_csv(spec, plan));
   std::size_t line = 0;
   for (std::string want; std::getline(expected, want); ++line) {

@@ -21,8 +21,8 @@ std::string milestone_cells(const Milestone& m) {
 
 }  // namespace
 
-std::vector<const StudyRunResult*> runs_of(const StudySpec& spec, const StudyResult& result,
-                                           std::size_t world, const std::string& strategy) {
+std::vector<const StudyRunResult*> runs_of(const StudySpec& spec, const StudyResult& result, std::size_t world,
+                                           const std::string& strategy) {
   std::vector<const StudyRunResult*> out;
   const std::vector<StudyRun> plan = plan_runs(spec);
   for (std::size_t i = 0; i < plan.size() && i < result.runs.size(); ++i) {
@@ -47,15 +47,13 @@ std::string study_results_csv(const StudySpec& spec, const StudyResult& result) 
         "{},{},{},{},{:.2f},{:.3f},{},{},{},{:.4f},{:.4f},{:.4f},{},{:.2f},{:.2f},{:.4f},{},{},{},{"
         "},"
         "{:.2f},{:.1f}\n",
-        spec.worlds[plan[i].world].label, plan[i].strategy, plan[i].seed, s.status,
-        s.simulated_time, s.path_length, milestone_cells(s.milestones[0]),
-        milestone_cells(s.milestones[1]), milestone_cells(s.milestones[2]), s.coverage,
-        s.quality.precision, s.quality.recall, s.statistics.collisions, s.reachable_area_m2,
-        r.plan_free_area_m2,
-        r.plan_free_area_m2 > 0 ? s.reachable_area_m2 / r.plan_free_area_m2 : 0.0,
+        spec.worlds[plan[i].world].label, plan[i].strategy, plan[i].seed, s.status, s.simulated_time, s.path_length,
+        milestone_cells(s.milestones[0]), milestone_cells(s.milestones[1]), milestone_cells(s.milestones[2]),
+        s.coverage, s.quality.precision, s.quality.recall, s.statistics.collisions, s.reachable_area_m2,
+        r.plan_free_area_m2, r.plan_free_area_m2 > 0 ? s.reachable_area_m2 / r.plan_free_area_m2 : 0.0,
         s.statistics.stuck_goals, s.statistics.backtracks,
-        r.predicted_coverage >= 0 ? fmt::format("{:.4f}", r.predicted_coverage) : "", r.mission_id,
-        s.wall_time, s.real_time_factor);
+        r.predicted_coverage >= 0 ? fmt::format("{:.4f}", r.predicted_coverage) : "", r.mission_id, s.wall_time,
+        s.real_time_factor);
   }
   return csv;
 }
@@ -90,19 +88,17 @@ std::string study_summary_markdown(const StudySpec& spec, const StudyResult& res
       "{} missions: {} world(s) x {} strateg{} x {} seed(s), from {}. Pose source {}{}, time limit "
       "{:g} s "
       "(simulated), coverage goal {:g}, robot top speed {:g} m/s.\n\n",
-      result.runs.size(), spec.worlds.size(), spec.strategies.size(),
-      spec.strategies.size() == 1 ? "y" : "ies", spec.seeds.size(), spec.source,
-      pose_source_name(o.pose_source),
-      o.pose_source == PoseSource::kSlam ? fmt::format(" ({} particles)", o.slam.particles) : "",
-      o.time_limit, o.coverage_goal, o.robot.max_speed);
+      result.runs.size(), spec.worlds.size(), spec.strategies.size(), spec.strategies.size() == 1 ? "y" : "ies",
+      spec.seeds.size(), spec.source, pose_source_name(o.pose_source),
+      o.pose_source == PoseSource::kSlam ? fmt::format(" ({} particles)", o.slam.particles) : "", o.time_limit,
+      o.coverage_goal, o.robot.max_speed);
   md +=
       "Times are simulated seconds; \"to 95 %\" is until 95 % of the reachable free area of the "
       "true world "
       "was mapped. Means +- sample standard deviations are over the runs that reached 95 %, so "
       "read them "
       "together with the share that did. Collisions are summed over the runs.\n\n";
-  md +=
-      "**" + overall_line(spec, result) + "**\n\n" + to_markdown(status_table(spec, result)) + "\n";
+  md += "**" + overall_line(spec, result) + "**\n\n" + to_markdown(status_table(spec, result)) + "\n";
   if (const auto missing = missing_runs(spec, result); !missing.empty()) {
     md += fmt::format("Not finished ({}, listed in missing.txt):", missing.size());
     for (std::size_t i = 0; i < missing.size() && i < 20; ++i) md += " " + missing[i];
@@ -127,9 +123,8 @@ std::string study_summary_markdown(const StudySpec& spec, const StudyResult& res
   return md + "## Time to 95 % coverage\n\n![time to 95 %](time_to_95.png)\n";
 }
 
-std::vector<double> mean_coverage_curve(
-    const std::vector<const std::vector<CoverageSample>*>& curves,
-    const std::vector<double>& grid) {
+std::vector<double> mean_coverage_curve(const std::vector<const std::vector<CoverageSample>*>& curves,
+                                        const std::vector<double>& grid) {
   std::vector<double> mean_curve(grid.size(), 0.0);
   if (curves.empty()) return mean_curve;
   for (const auto* curve : curves) {

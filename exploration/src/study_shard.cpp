@@ -22,9 +22,7 @@ std::optional<std::size_t> parse_count(const std::string& s) {
 
 Shard parse_shard(const std::string& text) {
   const std::size_t slash = text.find('/');
-  const auto bad = [&](const std::string& why) {
-    return std::invalid_argument("shard \"" + text + "\": " + why);
-  };
+  const auto bad = [&](const std::string& why) { return std::invalid_argument("shard \"" + text + "\": " + why); };
   if (slash == std::string::npos) throw bad("expected I/N, e.g. 0/4");
   const auto i = parse_count(text.substr(0, slash));
   const auto n = parse_count(text.substr(slash + 1));
@@ -39,13 +37,11 @@ std::optional<Shard> shard_from_slurm_environment() {
   const char* count = std::getenv("SLURM_ARRAY_TASK_COUNT");
   if (!id && !count) return std::nullopt;
   if (!id || !count)
-    throw std::invalid_argument(
-        "SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT must both be set for an array task");
+    throw std::invalid_argument("SLURM_ARRAY_TASK_ID and SLURM_ARRAY_TASK_COUNT must both be set for an array task");
   try {
     return parse_shard(std::string(id) + "/" + count);
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string("from SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT: ") +
-                                e.what());
+    throw std::invalid_argument(std::string("from SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT: ") + e.what());
   }
 }
 

@@ -21,14 +21,12 @@ std::string mean_std(const std::vector<double>& v, int decimals) {
 }
 
 std::string share(std::size_t k, std::size_t n) {
-  return fmt::format("{}/{} ({:.0f} %)", k, n,
-                     n ? 100.0 * static_cast<double>(k) / static_cast<double>(n) : 0.0);
+  return fmt::format("{}/{} ({:.0f} %)", k, n, n ? 100.0 * static_cast<double>(k) / static_cast<double>(n) : 0.0);
 }
 
 bool reached_goal(const StudyRunResult& r) { return r.summary.status == "coverage_reached"; }
 
-std::pair<std::vector<double>, std::vector<double>> to_95(
-    const std::vector<const StudyRunResult*>& runs) {
+std::pair<std::vector<double>, std::vector<double>> to_95(const std::vector<const StudyRunResult*>& runs) {
   std::pair<std::vector<double>, std::vector<double>> out;
   for (const StudyRunResult* r : runs) {
     const Milestone& m = r->summary.milestones[k95];
@@ -52,8 +50,8 @@ std::vector<std::string> test_row(const std::string& a, const std::string& b, co
 }
 
 // Times to 95 % of `strategy` on `world` by seed, for the runs that reached it.
-std::map<std::uint64_t, double> times_by_seed(const StudySpec& spec, const StudyResult& result,
-                                              std::size_t world, const std::string& strategy) {
+std::map<std::uint64_t, double> times_by_seed(const StudySpec& spec, const StudyResult& result, std::size_t world,
+                                              const std::string& strategy) {
   std::map<std::uint64_t, double> out;
   for (const StudyRunResult* r : runs_of(spec, result, world, strategy)) {
     if (r->summary.milestones[k95].reached) out[r->summary.seed] = r->summary.milestones[k95].time;
@@ -78,12 +76,10 @@ std::string overall_line(const StudySpec& spec, const StudyResult& result) {
     finished += n;
     by_strategy += fmt::format("{}{} {}/{}", by_strategy.empty() ? "" : ", ", strategy, k, n);
   }
-  std::string line = fmt::format("{} of {} missions reached the coverage goal of {:g} ({})",
-                                 reached, finished, spec.mission.coverage_goal, by_strategy);
+  std::string line = fmt::format("{} of {} missions reached the coverage goal of {:g} ({})", reached, finished,
+                                 spec.mission.coverage_goal, by_strategy);
   const std::size_t missing = result.runs.size() - result.finished();
-  if (missing > 0)
-    line +=
-        fmt::format("; {} of {} planned missions are not finished", missing, result.runs.size());
+  if (missing > 0) line += fmt::format("; {} of {} planned missions are not finished", missing, result.runs.size());
   return line + ".";
 }
 
@@ -126,16 +122,14 @@ StudyTable strategy_table(const StudySpec& spec, const StudyResult& result, std:
       collisions += r->summary.statistics.collisions;
       coverage.push_back(r->summary.coverage);
       area.push_back(r->summary.reachable_area_m2);
-      if (r->plan_free_area_m2 > 0)
-        plan_share.push_back(r->summary.reachable_area_m2 / r->plan_free_area_m2);
+      if (r->plan_free_area_m2 > 0) plan_share.push_back(r->summary.reachable_area_m2 / r->plan_free_area_m2);
       stuck.push_back(r->summary.statistics.stuck_goals);
       backtracks.push_back(r->summary.statistics.backtracks);
       if (r->predicted_coverage >= 0) predicted.push_back(r->predicted_coverage);
     }
-    t.rows.push_back({strategy, std::to_string(runs.size()), share(times.size(), runs.size()),
-                      mean_std(times, 1), mean_std(paths, 1), std::to_string(collisions),
-                      mean_std(coverage, 3), mean_std(area, 1), mean_std(plan_share, 3),
-                      mean_std(stuck, 1), mean_std(backtracks, 1),
+    t.rows.push_back({strategy, std::to_string(runs.size()), share(times.size(), runs.size()), mean_std(times, 1),
+                      mean_std(paths, 1), std::to_string(collisions), mean_std(coverage, 3), mean_std(area, 1),
+                      mean_std(plan_share, 3), mean_std(stuck, 1), mean_std(backtracks, 1),
                       predicted.empty() ? "-" : mean_std(predicted, 3)});
   }
   return t;
@@ -177,9 +171,8 @@ StudyTable paired_table(const StudySpec& spec, const StudyResult& result, std::s
       std::vector<std::string> row = {a, b, std::to_string(va.size()), std::to_string(a_faster),
                                       std::to_string(b_faster)};
       if (r.defined) {
-        for (const std::string& cell :
-             {fmt::format("{:.2f}", r.mean_difference), fmt::format("{:.3f}", r.t),
-              fmt::format("{:.0f}", r.df), fmt::format("{:.4f}", r.p)})
+        for (const std::string& cell : {fmt::format("{:.2f}", r.mean_difference), fmt::format("{:.3f}", r.t),
+                                        fmt::format("{:.0f}", r.df), fmt::format("{:.4f}", r.p)})
           row.push_back(cell);
       } else {
         row.insert(row.end(), {"n/a: " + r.why, "", "", ""});

@@ -35,7 +35,8 @@ bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMoti
   if (motion.v <= 0.0 || motion.distance <= 0.0) return false;
   const double k = motion.omega / motion.v;
   std::vector<Point> centres;
-  for (double s = kStep; s < motion.distance + kStep; s += kStep) centres.push_back(centre_after(std::min(s, motion.distance), k));
+  for (double s = kStep; s < motion.distance + kStep; s += kStep)
+    centres.push_back(centre_after(std::min(s, motion.distance), k));
   const double r2 = radius * radius;
   const double near2 = (motion.distance + radius) * (motion.distance + radius);
   for (std::size_t i = 0; i < scan.ranges.size(); ++i) {

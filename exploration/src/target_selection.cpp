@@ -61,8 +61,8 @@ TravelCost travel_cost(const planner::Costmap& cm, const planner::Point2& start,
                        const std::vector<slam::CellIndex>& targets = {}) {
   const slam::CellIndex lo = cm.origin();
   const slam::CellIndex hi{lo.x + cm.width() - 1, lo.y + cm.height() - 1};
-  return TravelCost(lo, hi, cm.resolution(), cm.cell_at(start), [&](slam::CellIndex c) { return cm.cell_is_free(c); },
-                    targets);
+  return TravelCost(
+      lo, hi, cm.resolution(), cm.cell_at(start), [&](slam::CellIndex c) { return cm.cell_is_free(c); }, targets);
 }
 
 std::vector<slam::CellIndex> goal_cells(const planner::Costmap& cm, const std::vector<FrontierCluster>& clusters) {
@@ -137,10 +137,11 @@ void log_predicted_shares(const SelectionInputs& in, const std::vector<Candidate
     partly += c.predicted_share > 0.0 && c.predicted_share < 1.0;
   }
   const Candidate& c = candidates[pick];
-  spdlog::debug("look-ahead: chosen frontier of {} cells at ({:.2f}, {:.2f}) {:.0f}% predicted, gain {:.1f} m^2; "
-                "{} of {} frontiers fully predicted, {} partly",
-                c.cluster->cells.size(), c.cluster->goal_x, c.cluster->goal_y, 100 * c.predicted_share,
-                c.information_gain, skipped, candidates.size(), partly);
+  spdlog::debug(
+      "look-ahead: chosen frontier of {} cells at ({:.2f}, {:.2f}) {:.0f}% predicted, gain {:.1f} m^2; "
+      "{} of {} frontiers fully predicted, {} partly",
+      c.cluster->cells.size(), c.cluster->goal_x, c.cluster->goal_y, 100 * c.predicted_share, c.information_gain,
+      skipped, candidates.size(), partly);
   if (in.skip.variant != SkipVariant::kRegion || !spdlog::should_log(spdlog::level::debug)) return;
   const RegionArea a = in.predicted->region_area(*in.map, *c.cluster, in.skip);
   spdlog::debug("look-ahead: its region: {:.1f} m^2 predicted, {:.1f} m^2 not", a.predicted, a.unpredicted);
@@ -246,9 +247,7 @@ Selection select_escape(const SelectionInputs& in, Breadcrumbs& crumbs) {
   const auto start = nearest_free(cm, in.pose.x, in.pose.y, 0.5);
   // With no free cell near the robot its place is empty: any free crumb is outside it.
   const std::optional<TravelCost> place = start ? std::optional<TravelCost>(travel_cost(cm, *start)) : std::nullopt;
-  const auto outside = [&](planner::Point2 p) {
-    return cm.is_free(p) && !(place && place->reachable(cm.cell_at(p)));
-  };
+  const auto outside = [&](planner::Point2 p) { return cm.is_free(p) && !(place && place->reachable(cm.cell_at(p))); };
   // Between passes of the trail the map decides, with the robot's body and no margin: the
   // margin may have closed a door the robot drove through, but a wall between two trails,
   // or a jamb a shortcut would brush, is in the map itself.

@@ -40,8 +40,7 @@ std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double la
   }
   if (name == "advantage") return std::make_unique<DistanceAdvantageStrategy>();
   if (name == "predictive-advantage") {
-    return std::make_unique<PredictionAwareStrategy>(std::make_unique<DistanceAdvantageStrategy>(),
-                                                     skip_share);
+    return std::make_unique<PredictionAwareStrategy>(std::make_unique<DistanceAdvantageStrategy>(), skip_share);
   }
   throw std::invalid_argument(
       "unknown strategy '" + name +

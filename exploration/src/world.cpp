@@ -7,13 +7,11 @@
 
 namespace lookahead::exploration {
 
-World::World(int width, int height, double resolution, const Eigen::Vector2d& origin,
-             std::uint8_t fill)
+World::World(int width, int height, double resolution, const Eigen::Vector2d& origin, std::uint8_t fill)
     : width_(width), height_(height), resolution_(resolution), origin_(origin) {
   if (width <= 0 || height <= 0 || !(resolution > 0)) {
-    throw std::invalid_argument("World: size and resolution must be positive (got " +
-                                std::to_string(width) + " x " + std::to_string(height) + " at " +
-                                std::to_string(resolution) + " m)");
+    throw std::invalid_argument("World: size and resolution must be positive (got " + std::to_string(width) + " x " +
+                                std::to_string(height) + " at " + std::to_string(resolution) + " m)");
   }
   cells_.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), fill);
 }
@@ -29,9 +27,7 @@ Eigen::Vector2d World::center_of(slam::CellIndex c) const {
 
 void World::fill_rect(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, std::uint8_t value) {
   // First and one-past-last cell whose centre (i + 0.5) * res lies in [lo, hi).
-  const auto first = [&](double v, double o) {
-    return static_cast<int>(std::ceil((v - o) / resolution_ - 0.5));
-  };
+  const auto first = [&](double v, double o) { return static_cast<int>(std::ceil((v - o) / resolution_ - 0.5)); };
   const int x0 = std::max(0, first(lo.x(), origin_.x()));
   const int y0 = std::max(0, first(lo.y(), origin_.y()));
   const int x1 = std::min(width_, first(hi.x(), origin_.x()));
@@ -45,8 +41,6 @@ std::size_t World::free_cell_count() const {
   return static_cast<std::size_t>(std::count(cells_.begin(), cells_.end(), kFree));
 }
 
-double World::free_area_m2() const {
-  return static_cast<double>(free_cell_count()) * resolution_ * resolution_;
-}
+double World::free_area_m2() const { return static_cast<double>(free_cell_count()) * resolution_ * resolution_; }
 
 }  // namespace lookahead::exploration

@@ -16,8 +16,7 @@ PixelRule PixelRule::map_server(double free_thresh, bool negate) {
 
 void PixelRule::validate() const {
   if (!(free_above >= -1.0 && free_above <= 255.0)) {
-    throw std::invalid_argument("PixelRule.free_above must be in -1..255, got " +
-                                std::to_string(free_above));
+    throw std::invalid_argument("PixelRule.free_above must be in -1..255, got " + std::to_string(free_above));
   }
 }
 
@@ -35,9 +34,8 @@ double pixel_value(const cv::Mat& image, int r, int c, PixelChannel channel) {
 
 }  // namespace
 
-cv::Mat read_free_mask(const std::string& path, const PixelRule& rule,
-                       const std::string& context_file, std::size_t context_line,
-                       const std::string& key) {
+cv::Mat read_free_mask(const std::string& path, const PixelRule& rule, const std::string& context_file,
+                       std::size_t context_line, const std::string& key) {
   rule.validate();
   slam::check_image_header(path, context_file, context_line, key);
   cv::Mat image;

@@ -38,8 +38,8 @@ struct MapYaml {
 };
 
 void check_keys(const YAML::Node& root, const std::string& file) {
-  static const std::set<std::string> known = {"image",     "resolution",      "origin", "negate",
-                                              "mode",      "occupied_thresh", "free_thresh"};
+  static const std::set<std::string> known = {"image", "resolution",      "origin",     "negate",
+                                              "mode",  "occupied_thresh", "free_thresh"};
   for (const auto& kv : root) {
     const auto key = kv.first.as<std::string>();
     if (!known.count(key)) throw ParseError(file, line_of(kv.first), key, "", "unknown key");
@@ -67,8 +67,7 @@ MapYaml parse_map_yaml(const YAML::Node& root, const std::string& file) {
   m.image = scalar<std::string>(root["image"], "image", file);
   m.resolution = scalar<double>(root["resolution"], "resolution", file);
   if (!(m.resolution > 0)) {
-    throw ParseError(file, line_of(root["resolution"]), "resolution", YAML::Dump(root["resolution"]),
-                     "must be > 0");
+    throw ParseError(file, line_of(root["resolution"]), "resolution", YAML::Dump(root["resolution"]), "must be > 0");
   }
   read_origin(root["origin"], file, m);
   if (root["negate"]) m.negate = scalar<int>(root["negate"], "negate", file) != 0;
@@ -76,8 +75,8 @@ MapYaml parse_map_yaml(const YAML::Node& root, const std::string& file) {
   if (root["free_thresh"]) m.free_thresh = scalar<double>(root["free_thresh"], "free_thresh", file);
   if (!(m.free_thresh >= 0 && m.free_thresh < m.occupied_thresh && m.occupied_thresh <= 1)) {
     const auto& n = root["free_thresh"] ? root["free_thresh"] : root["occupied_thresh"];
-    throw ParseError(file, n ? line_of(n) : line_of(root), "free_thresh",
-                     std::to_string(m.free_thresh), "need 0 <= free_thresh < occupied_thresh <= 1");
+    throw ParseError(file, n ? line_of(n) : line_of(root), "free_thresh", std::to_string(m.free_thresh),
+                     "need 0 <= free_thresh < occupied_thresh <= 1");
   }
   // trinary and scale share the free set p < free_thresh; raw reads values as occupancy.
   if (root["mode"]) {
@@ -114,8 +113,8 @@ World load_map_yaml(const std::string& path) {
   const MapYaml m = parse_map_yaml(root, path);
   fs::path image = m.image;
   if (image.is_relative()) image = fs::path(path).parent_path() / image;
-  const cv::Mat mask = detail::read_free_mask(image.string(), PixelRule::map_server(m.free_thresh, m.negate),
-                                              path, line_of(root["image"]), "image");
+  const cv::Mat mask = detail::read_free_mask(image.string(), PixelRule::map_server(m.free_thresh, m.negate), path,
+                                              line_of(root["image"]), "image");
   World world = detail::world_from_mask(mask, m.resolution, m.origin);
   world.set_source(path);
   return world;

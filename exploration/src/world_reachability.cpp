@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/world_reachability.hpp"
 
-#include <opencv2/imgproc.hpp>
-
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
 namespace lookahead::exploration {
@@ -26,8 +25,7 @@ cv::Mat centre_space(const World& w, double radius) {
   return fits;
 }
 
-std::size_t flood_fill(const cv::Mat& space, slam::CellIndex start, std::vector<std::uint8_t>& out,
-                       int width) {
+std::size_t flood_fill(const cv::Mat& space, slam::CellIndex start, std::vector<std::uint8_t>& out, int width) {
   std::vector<slam::CellIndex> stack{start};
   out[static_cast<std::size_t>(start.y) * width + start.x] = 1;
   std::size_t count = 0;
@@ -51,8 +49,7 @@ std::size_t flood_fill(const cv::Mat& space, slam::CellIndex start, std::vector<
 
 }  // namespace
 
-ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& start,
-                                  double robot_radius) {
+ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& start, double robot_radius) {
   if (!(robot_radius >= 0)) throw std::invalid_argument("robot_radius must be >= 0");
   ReachableArea r;
   const std::size_t n = world.cells().size();
@@ -77,12 +74,10 @@ ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& sta
   return r;
 }
 
-std::vector<std::uint8_t> observable_cells(const World& world, const ReachableArea& area,
-                                           double margin) {
+std::vector<std::uint8_t> observable_cells(const World& world, const ReachableArea& area, double margin) {
   const int w = world.width(), h = world.height();
   std::vector<std::uint8_t> out(area.reachable.size(), 0);
-  if (area.reachable.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h))
-    return out;
+  if (area.reachable.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h)) return out;
   const int r = static_cast<int>(std::ceil(margin / world.resolution()));
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {

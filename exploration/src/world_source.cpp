@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 #include <stdexcept>
+#include <vector>
 
 #include "lookahead/exploration/robot.hpp"
 #include "lookahead/exploration/world_loader.hpp"
@@ -22,12 +22,15 @@ World load_file(const WorldSpec& spec) {
   if (ends_with(spec.name, ".world")) return load_stage_world(spec.name);
   // An image carries no scale: a guessed one would shrink or stretch every room.
   if (!(spec.image_resolution > 0)) {
-    throw std::invalid_argument(spec.name + ": resolution (m/pixel) of an image world must be stated (--resolution, "
-                                "or resolution: in a study), got " + std::to_string(spec.image_resolution));
+    throw std::invalid_argument(spec.name +
+                                ": resolution (m/pixel) of an image world must be stated (--resolution, "
+                                "or resolution: in a study), got " +
+                                std::to_string(spec.image_resolution));
   }
   ImageWorldOptions o;
   o.resolution = spec.image_resolution;
-  if (spec.pixel_rule == "only_white") o.rule = PixelRule::only_white();
+  if (spec.pixel_rule == "only_white")
+    o.rule = PixelRule::only_white();
   else if (spec.pixel_rule != "stage") {
     throw std::invalid_argument("pixel rule '" + spec.pixel_rule + "' (choose stage or only_white)");
   }
@@ -37,8 +40,8 @@ World load_file(const WorldSpec& spec) {
 }  // namespace
 
 void check_start(const World& world, const std::string& name, const slam::Pose2& start, double robot_radius) {
-  const std::string pose = "(" + std::to_string(start.x) + ", " + std::to_string(start.y) + ", " +
-                           std::to_string(start.theta) + ")";
+  const std::string pose =
+      "(" + std::to_string(start.x) + ", " + std::to_string(start.y) + ", " + std::to_string(start.theta) + ")";
   const Eigen::Vector2d lo = world.origin();
   const Eigen::Vector2d hi = lo + Eigen::Vector2d(world.width_m(), world.height_m());
   if (!(std::isfinite(start.x) && std::isfinite(start.y) && std::isfinite(start.theta))) {
@@ -63,10 +66,13 @@ slam::Pose2 default_start(const World& world, double clearance) {
     for (int x = 0; x < world.width(); x += 4)
       if (!world.is_occupied(slam::CellIndex{x, y})) {
         const Eigen::Vector2d c = world.center_of({x, y});
-        mx += c.x(); my += c.y(); n += 1;
+        mx += c.x();
+        my += c.y();
+        n += 1;
       }
   if (n == 0) throw std::invalid_argument(world.source() + ": the world has no free space");
-  mx /= n; my /= n;
+  mx /= n;
+  my /= n;
   std::vector<std::pair<double, slam::Pose2>> spots;
   for (double y = world.origin().y(); y < world.origin().y() + world.height_m(); y += 0.25) {
     for (double x = world.origin().x(); x < world.origin().x() + world.width_m(); x += 0.25) {

@@ -2,19 +2,18 @@
 // Loader (c): a Player/Stage .world and the floorplan bitmap it names. Stage (libstage
 // model.cc / stage.cc) centres a model on its `pose [x y z yaw(deg)]` and stretches the
 // bitmap to its `size [sx sy sz]` metres; Stage 2 worlds give `bitmap_resolution` instead.
-#include <opencv2/core.hpp>
-#include <opencv2/imgproc.hpp>
-
 #include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "lookahead/exploration/world_loader.hpp"
-#include "lookahead/slam/limits/input_limits.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "lookahead/slam/limits/input_limits.hpp"
 #include "world_image.hpp"
 #include "world_stage_syntax.hpp"
 
@@ -113,8 +112,7 @@ int quarter_turns(const StageModel& m, const StageFile& f, const std::string& fi
 
 World load_stage_world(const std::string& path, const StageWorldOptions& options) {
   if (!(options.resolution >= 0)) {
-    throw std::invalid_argument("StageWorldOptions.resolution must be >= 0, got " +
-                                std::to_string(options.resolution));
+    throw std::invalid_argument("StageWorldOptions.resolution must be >= 0, got " + std::to_string(options.resolution));
   }
   std::ifstream in(path);
   if (!in) throw ParseError(path, 0, "", "", "cannot open file");
@@ -124,8 +122,8 @@ World load_stage_world(const std::string& path, const StageWorldOptions& options
   const StageModel& m = the_floorplan(f, path);
   const StageProperty& bitmap = *property(m, f, "bitmap");
   const fs::path image = find_bitmap(bitmap, path);
-  cv::Mat mask = detail::read_free_mask(image.string(), options.rule.value_or(PixelRule::stage()),
-                                        path, bitmap.line, "bitmap");
+  cv::Mat mask =
+      detail::read_free_mask(image.string(), options.rule.value_or(PixelRule::stage()), path, bitmap.line, "bitmap");
   double sx = 0.0, sy = 0.0;
   if (const StageProperty* size = property(m, f, "size")) {
     sx = number(*size, 0, "size", path);

@@ -21,8 +21,8 @@ bool is_punct(char c) { return c == '(' || c == ')' || c == '[' || c == ']'; }
 
 // Reads a word; a '[' right after a word character belongs to it (`point[3]`).
 std::size_t read_word(const std::string& s, std::size_t i, std::string& out) {
-  while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i])) && s[i] != '#' &&
-         s[i] != '"' && s[i] != '(' && s[i] != ')' && s[i] != ']') {
+  while (i < s.size() && !std::isspace(static_cast<unsigned char>(s[i])) && s[i] != '#' && s[i] != '"' && s[i] != '(' &&
+         s[i] != ')' && s[i] != ']') {
     if (s[i] == '[') {
       if (out.empty()) break;
       const std::size_t close = s.find(']', i);
@@ -42,9 +42,19 @@ std::vector<Token> tokenize(const std::string& s, const std::string& file) {
   for (std::size_t i = 0; i < s.size();) {
     const char c = s[i];
     if (c == '\n') ++line;
-    if (std::isspace(static_cast<unsigned char>(c))) { ++i; continue; }
-    if (c == '#') { while (i < s.size() && s[i] != '\n') ++i; continue; }
-    if (is_punct(c)) { tokens.push_back({std::string(1, c), line, false}); ++i; continue; }
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      ++i;
+      continue;
+    }
+    if (c == '#') {
+      while (i < s.size() && s[i] != '\n') ++i;
+      continue;
+    }
+    if (is_punct(c)) {
+      tokens.push_back({std::string(1, c), line, false});
+      ++i;
+      continue;
+    }
     if (c == '"') {
       const std::size_t close = s.find('"', i + 1);
       if (close == std::string::npos || s.find('\n', i + 1) < close) {
@@ -80,9 +90,7 @@ class Parser {
     }
     return t_[pos_++];
   }
-  bool peek(const char* text) const {
-    return pos_ < t_.size() && !t_[pos_].quoted && t_[pos_].text == text;
-  }
+  bool peek(const char* text) const { return pos_ < t_.size() && !t_[pos_].quoted && t_[pos_].text == text; }
 
   // Each nested block is a recursion: a bound keeps a deeply nested file from
   // overflowing the stack.

@@ -11,8 +11,7 @@
 namespace lookahead::planner {
 
 void validate(const CostmapOptions& o) {
-  detail::check_range("CostmapOptions.occupied_threshold", o.occupied_threshold, 0.5, 1.0, "",
-                      detail::Bound::kOpen);
+  detail::check_range("CostmapOptions.occupied_threshold", o.occupied_threshold, 0.5, 1.0, "", detail::Bound::kOpen);
   detail::check_range("CostmapOptions.robot_radius", o.robot_radius, 0.0, 5.0, "m");
   detail::check_range("CostmapOptions.margin", o.margin, 0.0, 50.0, "m");
 }
@@ -81,23 +80,17 @@ void Costmap::mark_blocked_cells(const slam::OccupancyGrid& map, int x0, int y0,
 
 Point2 Costmap::min_corner() const { return {origin_.x * resolution_, origin_.y * resolution_}; }
 
-Point2 Costmap::max_corner() const {
-  return {(origin_.x + width_) * resolution_, (origin_.y + height_) * resolution_};
-}
+Point2 Costmap::max_corner() const { return {(origin_.x + width_) * resolution_, (origin_.y + height_) * resolution_}; }
 
 slam::CellIndex Costmap::cell_at(Point2 p) const {
   // Same floor rule as slam::OccupancyGrid::cell_at, so both agree on every position.
-  return {static_cast<int>(std::floor(p.x / resolution_)),
-          static_cast<int>(std::floor(p.y / resolution_))};
+  return {static_cast<int>(std::floor(p.x / resolution_)), static_cast<int>(std::floor(p.y / resolution_))};
 }
 
-Point2 Costmap::cell_center(slam::CellIndex c) const {
-  return {(c.x + 0.5) * resolution_, (c.y + 0.5) * resolution_};
-}
+Point2 Costmap::cell_center(slam::CellIndex c) const { return {(c.x + 0.5) * resolution_, (c.y + 0.5) * resolution_}; }
 
 bool Costmap::contains(slam::CellIndex c) const {
-  return c.x >= origin_.x && c.y >= origin_.y && c.x < origin_.x + width_ &&
-         c.y < origin_.y + height_;
+  return c.x >= origin_.x && c.y >= origin_.y && c.x < origin_.x + width_ && c.y < origin_.y + height_;
 }
 
 bool Costmap::cell_is_free(slam::CellIndex c) const {
@@ -108,8 +101,8 @@ bool Costmap::segment_is_free(Point2 a, Point2 b) const {
   if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) {
     return false;
   }
-  return detail::walk_segment(a.x / resolution_, a.y / resolution_, b.x / resolution_,
-                              b.y / resolution_, [this](int x, int y, double) {
+  return detail::walk_segment(a.x / resolution_, a.y / resolution_, b.x / resolution_, b.y / resolution_,
+                              [this](int x, int y, double) {
                                 return cell_is_free({x, y});
                               });
 }

@@ -19,9 +19,7 @@ Point2 position(const ob::State* state) {
 
 }  // namespace
 
-bool CostmapValidityChecker::isValid(const ob::State* state) const {
-  return costmap_.is_free(position(state));
-}
+bool CostmapValidityChecker::isValid(const ob::State* state) const { return costmap_.is_free(position(state)); }
 
 bool CostmapMotionValidator::checkMotion(const ob::State* s1, const ob::State* s2) const {
   const bool ok = costmap_.segment_is_free(position(s1), position(s2));
@@ -35,12 +33,11 @@ bool CostmapMotionValidator::checkMotion(const ob::State* s1, const ob::State* s
   const Point2 b = position(s2);
   const double res = costmap_.resolution();
   double blocked_at = 1.0;
-  const bool ok =
-      walk_segment(a.x / res, a.y / res, b.x / res, b.y / res, [&](int x, int y, double t) {
-        if (costmap_.cell_is_free({x, y})) return true;
-        blocked_at = t;
-        return false;
-      });
+  const bool ok = walk_segment(a.x / res, a.y / res, b.x / res, b.y / res, [&](int x, int y, double t) {
+    if (costmap_.cell_is_free({x, y})) return true;
+    blocked_at = t;
+    return false;
+  });
   if (!ok) {
     // Step back a little from the blocked cell's border so the reported state is inside
     // the previous (free) cell.

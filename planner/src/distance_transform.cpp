@@ -8,13 +8,11 @@ namespace {
 
 // One 1D pass (the paper's DT(f)): f holds n samples with stride `stride` starting at
 // `first`; they are replaced by min_q ((p - q)^2 + f(q)). v, z and d are scratch buffers.
-void transform_line(double* f, int n, std::ptrdiff_t stride, std::vector<int>& v,
-                    std::vector<double>& z, std::vector<double>& d) {
+void transform_line(double* f, int n, std::ptrdiff_t stride, std::vector<int>& v, std::vector<double>& z,
+                    std::vector<double>& d) {
   const auto at = [&](int q) { return f[q * stride]; };
   // Where the parabolas rooted at q and p intersect (the paper's s).
-  const auto intersect = [&](int q, int p) {
-    return ((at(q) + q * q) - (at(p) + p * p)) / (2.0 * (q - p));
-  };
+  const auto intersect = [&](int q, int p) { return ((at(q) + q * q) - (at(p) + p * p)) / (2.0 * (q - p)); };
   int first = 0;
   while (first < n && at(first) >= kNoSeed) ++first;
   if (first == n) return;  // no seed on this line: everything stays kNoSeed
@@ -45,19 +43,16 @@ void transform_line(double* f, int n, std::ptrdiff_t stride, std::vector<int>& v
 
 }  // namespace
 
-std::vector<double> squared_distance_transform(const std::vector<std::uint8_t>& seed, int width,
-                                               int height) {
+std::vector<double> squared_distance_transform(const std::vector<std::uint8_t>& seed, int width, int height) {
   std::vector<double> f(seed.size());
   for (std::size_t i = 0; i < seed.size(); ++i) f[i] = seed[i] ? 0.0 : kNoSeed;
   const int longest = width > height ? width : height;
   std::vector<int> v(static_cast<std::size_t>(longest) + 1);
   std::vector<double> z(static_cast<std::size_t>(longest) + 2);
   std::vector<double> d(static_cast<std::size_t>(longest) + 1);
-  for (int x = 0; x < width; ++x)
-    transform_line(&f[static_cast<std::size_t>(x)], height, width, v, z, d);
+  for (int x = 0; x < width; ++x) transform_line(&f[static_cast<std::size_t>(x)], height, width, v, z, d);
   for (int y = 0; y < height; ++y) {
-    transform_line(&f[static_cast<std::size_t>(y) * static_cast<std::size_t>(width)], width, 1, v,
-                   z, d);
+    transform_line(&f[static_cast<std::size_t>(y) * static_cast<std::size_t>(width)], width, 1, v, z, d);
   }
   return f;
 }

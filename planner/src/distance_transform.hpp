@@ -11,8 +11,7 @@ namespace lookahead::planner::detail {
 
 /// For every cell of a width x height row-major raster, the squared distance in cells^2 from
 /// its centre to the nearest centre with seed[i] != 0; kNoSeed when there is no seed at all.
-std::vector<double> squared_distance_transform(const std::vector<std::uint8_t>& seed, int width,
-                                               int height);
+std::vector<double> squared_distance_transform(const std::vector<std::uint8_t>& seed, int width, int height);
 
 inline constexpr double kNoSeed = 1e20;
 

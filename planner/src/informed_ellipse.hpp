@@ -24,9 +24,7 @@ class InformedEllipse {
         angle_(std::atan2(goal.y - start.y, goal.x - start.x)),
         tolerance_(tolerance) {}
 
-  [[nodiscard]] double semi_major(double cost) const {
-    return std::max(0.5 * (cost + tolerance_), half_focal_);
-  }
+  [[nodiscard]] double semi_major(double cost) const { return std::max(0.5 * (cost + tolerance_), half_focal_); }
   [[nodiscard]] double semi_minor(double cost) const {
     const double a = semi_major(cost);
     return std::sqrt(std::max(a * a - half_focal_ * half_focal_, 0.0));

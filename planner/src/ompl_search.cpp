@@ -20,8 +20,7 @@ namespace ob = ompl::base;
 namespace og = ompl::geometric;
 namespace {
 
-ob::SpaceInformationPtr make_space(const Costmap& costmap,
-                                   const std::shared_ptr<SamplingContext>& context) {
+ob::SpaceInformationPtr make_space(const Costmap& costmap, const std::shared_ptr<SamplingContext>& context) {
   auto space = std::make_shared<SeededPlane>(context);
   ob::RealVectorBounds bounds(2);
   bounds.setLow(0, costmap.min_corner().x);
@@ -72,17 +71,14 @@ Path to_path(const og::PathGeometric& path) {
   Path out;
   out.reserve(path.getStateCount());
   for (std::size_t i = 0; i < path.getStateCount(); ++i) {
-    const double* v = path.getState(static_cast<unsigned int>(i))
-                          ->as<ob::RealVectorStateSpace::StateType>()
-                          ->values;
+    const double* v = path.getState(static_cast<unsigned int>(i))->as<ob::RealVectorStateSpace::StateType>()->values;
     out.push_back({v[0], v[1]});
   }
   return out;
 }
 
 /// Shortcut and smooth with a fixed number of steps (no wall clock, so it stays repeatable).
-Path simplify(const og::PathGeometric& found, const ob::SpaceInformationPtr& si,
-              SamplingContext& context) {
+Path simplify(const og::PathGeometric& found, const ob::SpaceInformationPtr& si, SamplingContext& context) {
   og::PathGeometric path(found);
   SeededPathSimplifier simplifier(si, context.next_seed());
   simplifier.reduceVertices(path);
@@ -106,17 +102,14 @@ std::int64_t bounded_samples(const PlannerOptions& options, double area) {
 /// depends on the machine's load, and the same seed would give different paths. Only a
 /// search without one (max_samples = 0) is ended by time_budget.
 ob::PlannerTerminationCondition termination(const PlannerOptions& options,
-                                            const std::shared_ptr<SamplingContext>& context,
-                                            std::int64_t max_samples) {
+                                            const std::shared_ptr<SamplingContext>& context, std::int64_t max_samples) {
   if (max_samples <= 0) return ob::timedPlannerTerminationCondition(options.time_budget);
-  return ob::PlannerTerminationCondition(
-      [context, max_samples] { return context->samples() >= max_samples; });
+  return ob::PlannerTerminationCondition([context, max_samples] { return context->samples() >= max_samples; });
 }
 
 }  // namespace
 
-SearchOutcome search_with_ompl(const Costmap& costmap, Point2 start, Point2 goal,
-                               const PlannerOptions& options) {
+SearchOutcome search_with_ompl(const Costmap& costmap, Point2 start, Point2 goal, const PlannerOptions& options) {
   auto context = std::make_shared<SamplingContext>(options.seed);
   std::int64_t max_samples = options.max_samples;
   if (options.cost_bound > 0.0) {

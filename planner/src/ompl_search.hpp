@@ -19,7 +19,6 @@ struct SearchOutcome {
 };
 
 /// Plans in R^2 over the costmap's extent; start and goal must be free.
-SearchOutcome search_with_ompl(const Costmap& costmap, Point2 start, Point2 goal,
-                               const PlannerOptions& options);
+SearchOutcome search_with_ompl(const Costmap& costmap, Point2 start, Point2 goal, const PlannerOptions& options);
 
 }  // namespace lookahead::planner::detail

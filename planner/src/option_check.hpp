@@ -18,8 +18,7 @@ inline void check_range(const char* field, double value, double lo, double hi, c
   const bool above_lo = lower == Bound::kOpen ? value > lo : value >= lo;
   if (std::isfinite(value) && above_lo && value <= hi) return;
   std::ostringstream msg;
-  msg << field << " = " << value << " is outside " << (lower == Bound::kOpen ? "(" : "[") << lo
-      << ", " << hi << "]";
+  msg << field << " = " << value << " is outside " << (lower == Bound::kOpen ? "(" : "[") << lo << ", " << hi << "]";
   if (unit[0] != '\0') msg << ' ' << unit;
   throw std::invalid_argument(msg.str());
 }

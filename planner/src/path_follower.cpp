@@ -15,8 +15,7 @@ Point2 closest_on_segment(Point2 a, Point2 b, Point2 p, double& dist) {
   const double dx = b.x - a.x;
   const double dy = b.y - a.y;
   const double len2 = dx * dx + dy * dy;
-  const double t =
-      len2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+  const double t = len2 > 0.0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
   const Point2 q{a.x + t * dx, a.y + t * dy};
   dist = distance(p, q);
   return q;
@@ -57,11 +56,9 @@ void validate(const FollowerOptions& o) {
   using detail::Bound;
   using detail::check_range;
   check_range("FollowerOptions.lookahead", o.lookahead, 0.0, 10.0, "m", Bound::kOpen);
-  check_range("FollowerOptions.max_linear_speed", o.max_linear_speed, 0.0, 5.0, "m/s",
-              Bound::kOpen);
+  check_range("FollowerOptions.max_linear_speed", o.max_linear_speed, 0.0, 5.0, "m/s", Bound::kOpen);
   check_range("FollowerOptions.max_turn_rate", o.max_turn_rate, 0.0, 10.0, "rad/s", Bound::kOpen);
-  check_range("FollowerOptions.rotate_in_place_angle", o.rotate_in_place_angle, 0.0, M_PI, "rad",
-              Bound::kOpen);
+  check_range("FollowerOptions.rotate_in_place_angle", o.rotate_in_place_angle, 0.0, M_PI, "rad", Bound::kOpen);
   check_range("FollowerOptions.goal_tolerance", o.goal_tolerance, 0.0, 5.0, "m", Bound::kOpen);
   check_range("FollowerOptions.approach_gain", o.approach_gain, 0.0, 100.0, "1/s", Bound::kOpen);
 }
@@ -134,16 +131,14 @@ VelocityCommand PathFollower::command(const slam::Pose2& pose) {
   const double l2 = xr * xr + yr * yr;
   const double curvature = l2 > 1e-12 ? 2.0 * yr / l2 : 0.0;  // Coulter Sec. 2: 2 y / L^2
   double v = std::min(options_.max_linear_speed, options_.approach_gain * to_goal);
-  if (std::fabs(curvature * v) > options_.max_turn_rate)
-    v = options_.max_turn_rate / std::fabs(curvature);
+  if (std::fabs(curvature * v) > options_.max_turn_rate) v = options_.max_turn_rate / std::fabs(curvature);
   return {v, curvature * v};
 }
 
 bool PathFollower::path_still_valid(const Costmap& costmap) const {
   if (goal_reached_) return true;
   Path remaining{projection_};
-  remaining.insert(remaining.end(), path_.begin() + static_cast<std::ptrdiff_t>(segment_) + 1,
-                   path_.end());
+  remaining.insert(remaining.end(), path_.begin() + static_cast<std::ptrdiff_t>(segment_) + 1, path_.end());
   return drop_escape(costmap, remaining) && costmap.path_is_free(remaining);
 }
 

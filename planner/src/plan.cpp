@@ -22,20 +22,16 @@ PlanResult failure(PlanStatus status, std::string message) {
 }
 
 /// Step 2: the answers that need no search.
-std::optional<PlanResult> precheck(const Costmap& costmap, Point2 start, Point2 goal,
-                                   const PlannerOptions& options) {
-  if (!std::isfinite(start.x) || !std::isfinite(start.y) || !std::isfinite(goal.x) ||
-      !std::isfinite(goal.y)) {
+std::optional<PlanResult> precheck(const Costmap& costmap, Point2 start, Point2 goal, const PlannerOptions& options) {
+  if (!std::isfinite(start.x) || !std::isfinite(start.y) || !std::isfinite(goal.x) || !std::isfinite(goal.y)) {
     return failure(PlanStatus::kInvalidInput, "start or goal is not finite");
   }
   if (costmap.empty()) return failure(PlanStatus::kInvalidInput, "the map has no known cells");
   if (!costmap.is_free(start)) {
-    return failure(PlanStatus::kStartBlocked,
-                   "start is in an obstacle, its inflation, unknown space or off the map");
+    return failure(PlanStatus::kStartBlocked, "start is in an obstacle, its inflation, unknown space or off the map");
   }
   if (!costmap.is_free(goal)) {
-    return failure(PlanStatus::kGoalBlocked,
-                   "goal is in an obstacle, its inflation, unknown space or off the map");
+    return failure(PlanStatus::kGoalBlocked, "goal is in an obstacle, its inflation, unknown space or off the map");
   }
   if (!detail::reachable(costmap, start, goal, options.goal_tolerance)) {
     return failure(PlanStatus::kNoPath, "goal unreachable: not connected to the start");
@@ -57,14 +53,12 @@ std::optional<Path> guard(const Costmap& costmap, std::initializer_list<const Pa
     if (path->empty()) continue;
     if (costmap.path_is_free(*path)) return *path;
     ++rejections;
-    spdlog::warn("planner: a {}-waypoint path failed the final collision check; not used",
-                 path->size());
+    spdlog::warn("planner: a {}-waypoint path failed the final collision check; not used", path->size());
   }
   return std::nullopt;
 }
 
-PlanResult search(const Costmap& costmap, Point2 start, Point2 goal,
-                  const PlannerOptions& options) {
+PlanResult search(const Costmap& costmap, Point2 start, Point2 goal, const PlannerOptions& options) {
   if (costmap.segment_is_free(start, goal)) {
     // The straight segment is the shortest path there is: every optimal planner converges
     // to it, so no samples are spent on finding it again.
@@ -125,13 +119,13 @@ PlanResult plan(const Costmap& costmap, const slam::Pose2& start, double goal_x,
   r.algorithm = options.algorithm;
   r.length = path_length(r.path);
   r.planning_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  spdlog::debug("planner: {} {} in {:.3f} s, {} states, {:.2f} m: {}", to_string(r.algorithm),
-                to_string(r.status), r.planning_time, r.states, r.length, r.message);
+  spdlog::debug("planner: {} {} in {:.3f} s, {} states, {:.2f} m: {}", to_string(r.algorithm), to_string(r.status),
+                r.planning_time, r.states, r.length, r.message);
   return r;
 }
 
-PlanResult plan(const slam::OccupancyGrid& map, const slam::Pose2& start, double goal_x,
-                double goal_y, const PlannerOptions& options) {
+PlanResult plan(const slam::OccupancyGrid& map, const slam::Pose2& start, double goal_x, double goal_y,
+                const PlannerOptions& options) {
   validate(options);
   const auto t0 = std::chrono::steady_clock::now();
   const Costmap costmap(map, options.costmap);

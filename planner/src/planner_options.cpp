@@ -21,9 +21,8 @@ void validate(const PlannerOptions& o) {
     case PlannerAlgorithm::kInformedRrtStar:
       break;
     default:
-      throw std::invalid_argument(
-          "PlannerOptions.algorithm = " + std::to_string(static_cast<int>(o.algorithm)) +
-          " is not a PlannerAlgorithm");
+      throw std::invalid_argument("PlannerOptions.algorithm = " + std::to_string(static_cast<int>(o.algorithm)) +
+                                  " is not a PlannerAlgorithm");
   }
   check_range("PlannerOptions.time_budget", o.time_budget, 0.0, 60.0, "s", Bound::kOpen);
   check_range("PlannerOptions.max_samples", static_cast<double>(o.max_samples), 0.0, 1e8, "");

@@ -18,8 +18,7 @@ std::vector<std::uint8_t> flood_fill(const Costmap& costmap, slam::CellIndex see
   std::vector<std::uint8_t> reached(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
   if (!costmap.cell_is_free(seed)) return reached;
   const auto at = [&](int x, int y) {
-    return static_cast<std::size_t>(y - o.y) * static_cast<std::size_t>(w) +
-           static_cast<std::size_t>(x - o.x);
+    return static_cast<std::size_t>(y - o.y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x - o.x);
   };
   std::vector<slam::CellIndex> stack{seed};
   reached[at(seed.x, seed.y)] = 1;
@@ -49,9 +48,8 @@ bool reachable(const Costmap& costmap, Point2 start, Point2 goal, double toleran
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {
       if (!costmap.contains({x, y})) continue;
-      const std::size_t i =
-          static_cast<std::size_t>(y - o.y) * static_cast<std::size_t>(costmap.width()) +
-          static_cast<std::size_t>(x - o.x);
+      const std::size_t i = static_cast<std::size_t>(y - o.y) * static_cast<std::size_t>(costmap.width()) +
+                            static_cast<std::size_t>(x - o.x);
       if (!reached[i]) continue;
       // Distance from the goal to the nearest point of this cell's square.
       const double nx = std::clamp(goal.x, x * res, (x + 1) * res);

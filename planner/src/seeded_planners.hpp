@@ -22,8 +22,7 @@ class SeededRrtStar : public ompl::geometric::RRTstar {
 
 class SeededInformedRrtStar : public ompl::geometric::InformedRRTstar {
  public:
-  SeededInformedRrtStar(const ompl::base::SpaceInformationPtr& si, std::uint32_t seed)
-      : InformedRRTstar(si) {
+  SeededInformedRrtStar(const ompl::base::SpaceInformationPtr& si, std::uint32_t seed) : InformedRRTstar(si) {
     rng_.setLocalSeed(seed);
   }
 };
@@ -43,8 +42,7 @@ class SequentialPrmStar : public ompl::geometric::PRMstar {
 
 class SeededPathSimplifier : public ompl::geometric::PathSimplifier {
  public:
-  SeededPathSimplifier(const ompl::base::SpaceInformationPtr& si, std::uint32_t seed)
-      : PathSimplifier(si) {
+  SeededPathSimplifier(const ompl::base::SpaceInformationPtr& si, std::uint32_t seed) : PathSimplifier(si) {
     rng_.setLocalSeed(seed);
   }
 };

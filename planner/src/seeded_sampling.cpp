@@ -56,8 +56,7 @@ class SeededSampler : public ob::RealVectorStateSampler {
 class EllipseInformedSampler : public ob::InformedSampler {
  public:
   EllipseInformedSampler(const ob::ProblemDefinitionPtr& problem, unsigned int max_calls,
-                         const std::shared_ptr<SamplingContext>& context, Point2 start, Point2 goal,
-                         double tolerance)
+                         const std::shared_ptr<SamplingContext>& context, Point2 start, Point2 goal, double tolerance)
       : InformedSampler(problem, max_calls),
         context_(context),
         uniform_(space_->allocDefaultStateSampler()),
@@ -80,8 +79,7 @@ class EllipseInformedSampler : public ob::InformedSampler {
     return false;
   }
 
-  bool sampleUniform(ob::State* state, const ob::Cost& min_cost,
-                     const ob::Cost& max_cost) override {
+  bool sampleUniform(ob::State* state, const ob::Cost& min_cost, const ob::Cost& max_cost) override {
     for (unsigned int i = 0; i < numIters_; ++i) {
       if (!sampleUniform(state, max_cost)) return false;
       if (!opt_->isCostBetterThan(heuristicSolnCost(state), min_cost)) return true;
@@ -109,19 +107,17 @@ ob::StateSamplerPtr SeededPlane::allocDefaultStateSampler() const {
   return std::make_shared<SeededSampler>(this, context_);
 }
 
-SeededPathLength::SeededPathLength(const ob::SpaceInformationPtr& si,
-                                   std::shared_ptr<SamplingContext> context, Point2 start,
-                                   Point2 goal, double goal_tolerance)
+SeededPathLength::SeededPathLength(const ob::SpaceInformationPtr& si, std::shared_ptr<SamplingContext> context,
+                                   Point2 start, Point2 goal, double goal_tolerance)
     : PathLengthOptimizationObjective(si),
       context_(std::move(context)),
       start_(start),
       goal_(goal),
       goal_tolerance_(goal_tolerance) {}
 
-ob::InformedSamplerPtr SeededPathLength::allocInformedStateSampler(
-    const ob::ProblemDefinitionPtr& problem, unsigned int max_calls) const {
-  return std::make_shared<EllipseInformedSampler>(problem, max_calls, context_, start_, goal_,
-                                                  goal_tolerance_);
+ob::InformedSamplerPtr SeededPathLength::allocInformedStateSampler(const ob::ProblemDefinitionPtr& problem,
+                                                                   unsigned int max_calls) const {
+  return std::make_shared<EllipseInformedSampler>(problem, max_calls, context_, start_, goal_, goal_tolerance_);
 }
 
 }  // namespace lookahead::planner::detail

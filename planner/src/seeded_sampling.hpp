@@ -61,11 +61,10 @@ class SeededPlane : public ompl::base::RealVectorStateSpace {
 /// PathLengthDirectInfSampler keeps a private RNG nobody can seed.
 class SeededPathLength : public ompl::base::PathLengthOptimizationObjective {
  public:
-  SeededPathLength(const ompl::base::SpaceInformationPtr& si,
-                   std::shared_ptr<SamplingContext> context, Point2 start, Point2 goal,
-                   double goal_tolerance);
-  ompl::base::InformedSamplerPtr allocInformedStateSampler(
-      const ompl::base::ProblemDefinitionPtr& problem, unsigned int max_calls) const override;
+  SeededPathLength(const ompl::base::SpaceInformationPtr& si, std::shared_ptr<SamplingContext> context, Point2 start,
+                   Point2 goal, double goal_tolerance);
+  ompl::base::InformedSamplerPtr allocInformedStateSampler(const ompl::base::ProblemDefinitionPtr& problem,
+                                                           unsigned int max_calls) const override;
 
  private:
   std::shared_ptr<SamplingContext> context_;

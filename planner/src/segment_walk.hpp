@@ -37,9 +37,9 @@ bool walk_segment(double ax, double ay, double bx, double by, Visit&& visit) {
   int left_x = std::abs(ex - ix);
   int left_y = std::abs(ey - iy);
   while (left_x > 0 || left_y > 0) {
-    const bool corner = left_x > 0 && left_y > 0 &&
-                        std::fabs(t_max_x - t_max_y) <
-                            kCornerTolerance * (t_delta_x < t_delta_y ? t_delta_x : t_delta_y);
+    const bool corner =
+        left_x > 0 && left_y > 0 &&
+        std::fabs(t_max_x - t_max_y) < kCornerTolerance * (t_delta_x < t_delta_y ? t_delta_x : t_delta_y);
     if (corner) {
       const double t = t_max_x < t_max_y ? t_max_x : t_max_y;
       if (!visit(ix + step_x, iy, t) || !visit(ix, iy + step_y, t)) return false;

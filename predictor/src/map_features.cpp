@@ -68,7 +68,8 @@ bool meet_at_corner(const LineSegment& a, const LineSegment& b, const FeatureOpt
   const double t = ((b.x0 - a.x0) * by - (b.y0 - a.y0) * bx) / den;
   c.x = a.x0 + t * ax;
   c.y = a.y0 + t * ay;
-  if (distance_to_segment(a, c.x, c.y) > o.corner_reach || distance_to_segment(b, c.x, c.y) > o.corner_reach) return false;
+  if (distance_to_segment(a, c.x, c.y) > o.corner_reach || distance_to_segment(b, c.x, c.y) > o.corner_reach)
+    return false;
   c.angle_a = away_from(a, c.x, c.y);
   c.angle_b = away_from(b, c.x, c.y);
   c.source = Corner::Source::kLineIntersection;
@@ -93,8 +94,10 @@ void gradient_corners(const Raster& r, const std::vector<LineSegment>& lines, co
     const LineSegment* second = nullptr;
     for (const LineSegment& l : lines) {
       if (distance_to_segment(l, x, y) > o.corner_reach) continue;
-      if (!first) first = &l;
-      else if (!second && std::abs(std::remainder(first->angle() - l.angle(), M_PI)) >= o.min_corner_angle) second = &l;
+      if (!first)
+        first = &l;
+      else if (!second && std::abs(std::remainder(first->angle() - l.angle(), M_PI)) >= o.min_corner_angle)
+        second = &l;
     }
     if (!first || !second) continue;  // P-SLAM registers corners by their two lines
     corners.push_back({x, y, away_from(*first, x, y), away_from(*second, x, y), Corner::Source::kGradient});
@@ -117,7 +120,8 @@ MapFeatures extract_features(const slam::OccupancyGrid& grid, const FeatureOptio
   for (std::size_t i = 0; i < f.lines.size(); ++i) {
     for (std::size_t j = i + 1; j < f.lines.size(); ++j) {
       Corner c;
-      if (meet_at_corner(f.lines[i], f.lines[j], o, c) && !near_existing(f.corners, c.x, c.y, o.min_corner_separation)) {
+      if (meet_at_corner(f.lines[i], f.lines[j], o, c) &&
+          !near_existing(f.corners, c.x, c.y, o.min_corner_separation)) {
         f.corners.push_back(c);
       }
     }

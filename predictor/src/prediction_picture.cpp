@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/predictor/prediction_picture.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "lookahead/slam/io/map_io.hpp"
 
@@ -39,9 +40,8 @@ std::vector<slam::PicturePoints> predicted_cell_overlays(const slam::OccupancyGr
   return {free, walls};  // walls drawn last, over the free cells
 }
 
-void write_prediction_picture(const std::string& png_path, const slam::OccupancyGrid& map,
-                              const Prediction& p, const PredictorOptions& o,
-                              const std::vector<slam::PicturePoints>& extra) {
+void write_prediction_picture(const std::string& png_path, const slam::OccupancyGrid& map, const Prediction& p,
+                              const PredictorOptions& o, const std::vector<slam::PicturePoints>& extra) {
   const double r = (p.diameter > 0 ? p.diameter : o.surroundings_diameter) / 2;  // the scale that was registered last
   std::vector<slam::PicturePath> paths{circle(p.target_x, p.target_y, r, {230, 120, 0}, "target region S_f")};
   std::vector<slam::PicturePoints> points = extra;  // under the hypothesis
@@ -57,7 +57,8 @@ void write_prediction_picture(const std::string& png_path, const slam::Occupancy
     const slam::Pose2 f_ref = p.alignment->reference_to_target.inverse().compose({p.target_x, p.target_y, 0});
     paths.push_back(circle(f_ref.x, f_ref.y, r, {0, 150, 60}, "reference region C_f'"));
     points.push_back({{{p.alignment->control.x, p.alignment->control.y}}, {220, 30, 30}, "control point P1", 5, false});
-    points.push_back({{{p.alignment->reference.x, p.alignment->reference.y}}, {0, 150, 60}, "reference point P2", 5, false});
+    points.push_back(
+        {{{p.alignment->reference.x, p.alignment->reference.y}}, {0, 150, 60}, "reference point P2", 5, false});
   }
   const std::string title = fmt::format("P-SLAM prediction: {}{}", to_string(p.status),
                                         p.alignment ? fmt::format(", Psi = {:.2f}", p.alignment->score.psi) : "");

@@ -50,8 +50,8 @@ void PredictionWorker::request(slam::OccupancyGrid map, std::vector<std::pair<do
 // Copy-on-write: a map whose tiles all are the modelled map's tiles has the same cells.
 const ExploredMapModel& PredictionWorker::model_of(const slam::OccupancyGrid& map) {
   const std::size_t tiles = map.tile_count();
-  const bool same = modelled_map_ && model_ && modelled_map_->tile_count() == tiles &&
-                    modelled_map_->tiles_shared_with(map) == tiles;
+  const bool same =
+      modelled_map_ && model_ && modelled_map_->tile_count() == tiles && modelled_map_->tiles_shared_with(map) == tiles;
   if (!same) {
     model_ = model_explored_map(map, options_);
     modelled_map_ = map;

@@ -10,7 +10,8 @@ void validate(const PredictorOptions& o) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("predictor: " + what); };
   if (!(o.surroundings_diameter > 0)) fail("surroundings_diameter > 0");
   if (!(o.control_point_range > 0)) fail("control_point_range > 0");
-  if (!(o.similarity_threshold >= 0.4 && o.similarity_threshold <= 0.7)) fail("similarity_threshold in [0.4, 0.7] (sec. III-C)");
+  if (!(o.similarity_threshold >= 0.4 && o.similarity_threshold <= 0.7))
+    fail("similarity_threshold in [0.4, 0.7] (sec. III-C)");
   if (!(o.similarity_resolution > 0)) fail("similarity_resolution > 0");
   if (o.similarity_tolerance_cells < 0 || o.similarity_tolerance_cells > 5) fail("similarity_tolerance_cells in 0..5");
   if (o.max_reference_corners < 1) fail("max_reference_corners >= 1");

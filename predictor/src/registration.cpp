@@ -51,16 +51,15 @@ std::array<slam::Pose2, 4> corner_alignments(const Corner& control, const Corner
   return out;
 }
 
-Registration register_region(const CoarseOccupancy& map, const RegionSamples& target_region,
-                             const Corner& control, const std::vector<Corner>& corners,
-                             const PredictorOptions& o) {
+Registration register_region(const CoarseOccupancy& map, const RegionSamples& target_region, const Corner& control,
+                             const std::vector<Corner>& corners, const PredictorOptions& o) {
   Registration r;
   const double min_new = o.min_predicted_area / (map.resolution() * map.resolution());
   for (const Corner* ref : reference_corners(control, corners, o)) {
     for (const slam::Pose2& t : corner_alignments(control, *ref)) {
       ++r.candidates;
       const SimilarityScore s = similarity(map, map, target_region, t);
-      if (s.new_known < min_new) continue;  // explains explored cells only: predicts nothing
+      if (s.new_known < min_new) continue;                      // explains explored cells only: predicts nothing
       if (s.conflict_share() > o.max_conflict_share) continue;  // walls across known free space
       if (!r.best || better(s, r.best->score)) r.best = Alignment{t, control, *ref, s};
     }

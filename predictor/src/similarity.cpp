@@ -6,8 +6,8 @@
 
 namespace lookahead::predictor {
 
-CoarseOccupancy::CoarseOccupancy(const slam::OccupancyGrid& grid, double resolution,
-                                 double occupied_threshold, int tolerance_cells)
+CoarseOccupancy::CoarseOccupancy(const slam::OccupancyGrid& grid, double resolution, double occupied_threshold,
+                                 int tolerance_cells)
     : res_(resolution) {
   if (!(resolution >= grid.resolution()) || tolerance_cells < 0) {
     throw std::invalid_argument("similarity resolution must be >= the map's; tolerance >= 0");
@@ -22,8 +22,8 @@ CoarseOccupancy::CoarseOccupancy(const slam::OccupancyGrid& grid, double resolut
   const auto n = static_cast<std::size_t>(w_) * static_cast<std::size_t>(h_);
   occupied_.assign(n, 0);
   known_.assign(n, 0);
-  const std::int16_t on = static_cast<std::int16_t>(
-      std::lround(1000.0 * std::log(occupied_threshold / (1.0 - occupied_threshold))));
+  const std::int16_t on =
+      static_cast<std::int16_t>(std::lround(1000.0 * std::log(occupied_threshold / (1.0 - occupied_threshold))));
   for (int cy = lo.y; cy <= hi.y; ++cy) {
     for (int cx = lo.x; cx <= hi.x; ++cx) {
       const std::int16_t l = grid.raw_log_odds({cx, cy});
@@ -88,7 +88,8 @@ SimilarityScore similarity(const CoarseOccupancy& target_map, const CoarseOccupa
     score.reference_occupied += r_occ;
     const bool t_near = target_map.near_occupied(px, py), r_near = reference_map.near_occupied(qx, qy);
     shared += (t_occ && r_near) + (r_occ && t_near);
-    score.conflicts += (t_occ && !r_near && reference_map.known(qx, qy)) + (r_occ && !t_near && target_map.known(px, py));
+    score.conflicts +=
+        (t_occ && !r_near && reference_map.known(qx, qy)) + (r_occ && !t_near && target_map.known(px, py));
     if (!target_map.known(px, py) && reference_map.known(qx, qy)) ++score.new_known;
   }
   const int total = score.target_occupied + score.reference_occupied;

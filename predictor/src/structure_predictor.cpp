@@ -28,9 +28,12 @@ double cell_area(const slam::OccupancyGrid& g) { return g.resolution() * g.resol
 
 const char* to_string(Prediction::Status status) {
   switch (status) {
-    case Prediction::Status::kPredicted: return "predicted";
-    case Prediction::Status::kNoControlPoint: return "no_control_point";
-    case Prediction::Status::kNoMatch: return "no_match";
+    case Prediction::Status::kPredicted:
+      return "predicted";
+    case Prediction::Status::kNoControlPoint:
+      return "no_control_point";
+    case Prediction::Status::kNoMatch:
+      return "no_match";
   }
   return "?";
 }

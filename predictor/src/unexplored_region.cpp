@@ -15,14 +15,12 @@ namespace lookahead::predictor {
 // figures did not move, while the maze lost half its time saving (-8.4 % against -14.1 %
 // to the 95 % goal, 5 seeds): there the seeds behind a pillar's wall near f predict the
 // next corridor, rightly (97 % of predicted cells right either way). README, P-SLAM 2.
-std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty,
-                                               double diameter) {
+std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty, double diameter) {
   const slam::CellIndex t = map.cell_at(tx, ty);
   const int r = static_cast<int>(std::ceil(diameter / 2 / map.resolution()));
   const int seed_r = std::min(r, static_cast<int>(std::ceil(kSeedRadius / map.resolution())));
   const int side = 2 * r + 1;
-  std::vector<std::uint8_t> seen(static_cast<std::size_t>(side) * static_cast<std::size_t>(side),
-                                 0);
+  std::vector<std::uint8_t> seen(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
   const auto within = [&](slam::CellIndex c, int radius) {
     const int dx = c.x - t.x, dy = c.y - t.y;
     return dx * dx + dy * dy <= radius * radius;

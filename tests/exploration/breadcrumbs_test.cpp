@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include "hand_made_grid.hpp"
 #include "lookahead/exploration/goal_blacklist.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
-#include "hand_made_grid.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -19,7 +19,7 @@ using slam::OccupancyGrid;
 TEST(Breadcrumbs, CrumbsAreDroppedAtTheirSpacing) {
   Breadcrumbs c(0.125);
   for (int i = 0; i <= 64; ++i) c.drop({i / 64.0, 0.0});  // 1 m in steps of 1/64 m (exact)
-  EXPECT_EQ(c.size(), 9U);                                 // 0, 0.125, ..., 1
+  EXPECT_EQ(c.size(), 9U);                                // 0, 0.125, ..., 1
   EXPECT_THROW(Breadcrumbs(0.0), std::invalid_argument);
 }
 
@@ -63,7 +63,8 @@ TEST(Breadcrumbs, BacktrackTakesTheShortestWayAlongTheTrailWhereItsPassesMeet) {
   };
 
   Breadcrumbs open = c;
-  const planner::Path shortcut = open.backtrack({0.25, 0.2}, outside, [](planner::Point2, planner::Point2) { return true; });
+  const planner::Path shortcut =
+      open.backtrack({0.25, 0.2}, outside, [](planner::Point2, planner::Point2) { return true; });
   ASSERT_GE(shortcut.size(), 2U);
   EXPECT_DOUBLE_EQ(shortcut.back().x, 0.0);
   EXPECT_DOUBLE_EQ(shortcut.back().y, 0.0);
@@ -137,8 +138,7 @@ TEST(Squeeze, TheDoorTheMarginClosedIsOpenToTheBody) {
   const planner::Costmap with_margin(map, co);
   co.robot_radius = 0.1;
   const planner::Costmap body(map, co);
-  SelectionInputs in =
-      testing::selection_inputs(map, with_margin, frontiers, *strategy, blacklist, {0.5, 0.75, 0.0});
+  SelectionInputs in = testing::selection_inputs(map, with_margin, frontiers, *strategy, blacklist, {0.5, 0.75, 0.0});
   EXPECT_EQ(select_target(in).outcome, SelectionOutcome::kUnreachable);
   in.costmap = &body;
   const Selection s = select_target(in);

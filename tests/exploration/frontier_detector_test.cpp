@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "lookahead/exploration/goal_blacklist.hpp"
 #include "hand_made_grid.hpp"
+#include "lookahead/exploration/goal_blacklist.hpp"
 
 namespace lookahead::exploration {
 namespace {

@@ -52,8 +52,10 @@ TEST(InformationGain, NothingIsVisibleFromInsideAClosedRoom) {
   for (int y = -20; y <= 20; ++y)
     for (int x = -20; x <= 20; ++x) {
       const bool edge = std::abs(x) == 20 || std::abs(y) == 20;
-      if (edge) wall(g, {x, y});
-      else g.add_log_odds({x, y}, g.fixed_miss());
+      if (edge)
+        wall(g, {x, y});
+      else
+        g.add_log_odds({x, y}, g.fixed_miss());
     }
   EXPECT_GT(information_gain(g, 0.0, 0.0, 4.0), 30.0);
   EXPECT_NEAR(visible_information_gain(g, 0.0, 0.0, 4.0), 0.0, 1e-9);

@@ -58,8 +58,8 @@ TEST(PredictedMap, PredictedShareCountsTheUnknownSideOfAFrontier) {
   }
   PredictedMap pm;
   EXPECT_DOUBLE_EQ(pm.predicted_share(map, cluster, 0.6), 0.0);
-  pm.add(hypothesis(0.05, 1.0, 0.7, -1000));  // covers y in [0, 1): all 20 cells' right side
-  EXPECT_GT(pm.predicted_share(map, cluster, 0.6), 0.6);  // right neighbours, not the ends
+  pm.add(hypothesis(0.05, 1.0, 0.7, -1000));                     // covers y in [0, 1): all 20 cells' right side
+  EXPECT_GT(pm.predicted_share(map, cluster, 0.6), 0.6);         // right neighbours, not the ends
   EXPECT_DOUBLE_EQ(pm.predicted_share(map, cluster, 0.8), 0.0);  // not confident enough
 }
 
@@ -79,25 +79,23 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   EXPECT_NEAR(none.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.39, 0.03);  // the half disc
   EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
   PredictedMap part;
-  part.add(hypothesis(0.05, 0.3, 0.7, -1000));  // free up to x = 0.3: the rest is unknown
-  EXPECT_GT(part.predicted_share(map, cluster, 0.6), 0.9);  // its far side looks covered ...
+  part.add(hypothesis(0.05, 0.3, 0.7, -1000));                    // free up to x = 0.3: the rest is unknown
+  EXPECT_GT(part.predicted_share(map, cluster, 0.6), 0.9);        // its far side looks covered ...
   EXPECT_DOUBLE_EQ(part.covered_share(map, cluster, rule), 0.0);  // ... its region is not
   PredictedMap free_region;
   free_region.add(hypothesis(0.05, 1.0, 0.7, -1000));
   EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, rule), 1.0);
   EXPECT_DOUBLE_EQ(free_region.covered_share(
-                       map, cluster,
-                       {0.8, SkipVariant::kRegion, 0.5, 0.1, 0.65, 0.0, std::nullopt, false, 0.35}),
+                       map, cluster, {0.8, SkipVariant::kRegion, 0.5, 0.1, 0.65, 0.0, std::nullopt, false, 0.35}),
                    0.0);  // Psi too low
   PredictedMap wall;
   wall.add(hypothesis(0.05, 0.1, 0.7, 2000));  // a wall right beyond the frontier closes it
   EXPECT_LT(wall.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.01);
   EXPECT_DOUBLE_EQ(wall.covered_share(map, cluster, rule), 1.0);
   // The far-side variant reads only the cells beside the frontier, all predicted here.
-  EXPECT_DOUBLE_EQ(part.covered_share(map, cluster,
-                                      {0.6, SkipVariant::kFarSide, 7.0, 0.1, 0.65, 0.0,
-                                       std::nullopt, false, 0.35}),
-                   part.predicted_share(map, cluster, 0.6));
+  EXPECT_DOUBLE_EQ(
+      part.covered_share(map, cluster, {0.6, SkipVariant::kFarSide, 7.0, 0.1, 0.65, 0.0, std::nullopt, false, 0.35}),
+      part.predicted_share(map, cluster, 0.6));
   const RegionArea a = part.region_area(map, cluster, rule);
   EXPECT_NEAR(a.predicted + a.unpredicted, 0.39, 0.03);  // the half disc, split
   EXPECT_GT(a.predicted, 0.05);
@@ -202,11 +200,11 @@ TEST(PredictedMap, AWallSliverIsLeftOutOnlyWhenAsked) {
   EXPECT_GT(a.unpredicted, 0.5);
   EXPECT_FALSE(a.wall_sliver(rule.region_tolerance));
   EXPECT_FALSE(left_out(a, rule));
-  EXPECT_FALSE((RegionArea{0.0, 0.0, false, false}).wall_sliver(0.1));   // stale: nothing unexplored
-  EXPECT_FALSE((RegionArea{0.0, 0.5, false, true}).wall_sliver(0.1));    // more than a pocket
-  EXPECT_TRUE((RegionArea{0.0, 0.05, false, false}).wall_sliver(0.1));   // a pocket closed by walls
-  EXPECT_FALSE((RegionArea{0.05, 0.0, false, true}).wall_sliver(0.1));   // predicted: the covered rule's
-  EXPECT_FALSE((RegionArea{0.0, 0.0, true, true}).wall_sliver(0.1));     // closed by a predicted wall: likewise
+  EXPECT_FALSE((RegionArea{0.0, 0.0, false, false}).wall_sliver(0.1));       // stale: nothing unexplored
+  EXPECT_FALSE((RegionArea{0.0, 0.5, false, true}).wall_sliver(0.1));        // more than a pocket
+  EXPECT_TRUE((RegionArea{0.0, 0.05, false, false}).wall_sliver(0.1));       // a pocket closed by walls
+  EXPECT_FALSE((RegionArea{0.05, 0.0, false, true}).wall_sliver(0.1));       // predicted: the covered rule's
+  EXPECT_FALSE((RegionArea{0.0, 0.0, true, true}).wall_sliver(0.1));         // closed by a predicted wall: likewise
   EXPECT_FALSE((RegionArea{0.0, 0.0, false, true, true}).wall_sliver(0.1));  // in a predicted wall's gap
 }
 
@@ -281,7 +279,7 @@ TEST(PredictionAwareStrategy, SkipsPredictedFrontiersAndRanksTheRestByItsBase) {
   cands[2].predicted_share = 0.9;
   EXPECT_EQ(s.choose(cands), std::optional<std::size_t>(1));
   cands[1].predicted_share = 1.0;
-  EXPECT_FALSE(s.choose(cands).has_value());  // everything predicted: nothing left to skip to
+  EXPECT_FALSE(s.choose(cands).has_value());                      // everything predicted: nothing left to skip to
   EXPECT_EQ(s.choose_any(cands), std::optional<std::size_t>(0));  // ... so the nearest is observed
   EXPECT_TRUE(s.uses_prediction());
   EXPECT_EQ(s.name(), "predictive");
@@ -292,10 +290,10 @@ TEST(HypothesisCheck, CountsCellsTheWorldConfirms) {
   World world(100, 40, 0.05, {0, 0}, World::kFree);
   world.fill_rect({0, 1.0}, {5.0, 1.1}, World::kOccupied);  // a wall along y = 1
   slam::HypothesisMap h;
-  for (double x = 0.525; x < 2.5; x += 0.05) {  // away from the world's edge (a wall)
-    h.grid.add_log_odds(h.grid.cell_at(x, 1.025), 3000);  // the wall, right
-    h.grid.add_log_odds(h.grid.cell_at(x, 0.525), -1000); // free below it, right
-    h.grid.add_log_odds(h.grid.cell_at(x, 1.525), 3000);  // a wall that is not there
+  for (double x = 0.525; x < 2.5; x += 0.05) {             // away from the world's edge (a wall)
+    h.grid.add_log_odds(h.grid.cell_at(x, 1.025), 3000);   // the wall, right
+    h.grid.add_log_odds(h.grid.cell_at(x, 0.525), -1000);  // free below it, right
+    h.grid.add_log_odds(h.grid.cell_at(x, 1.525), 3000);   // a wall that is not there
   }
   const HypothesisCheck c = check_against_world(h, world, {}, 0.65);
   EXPECT_EQ(c.cells, 120u);
@@ -314,11 +312,9 @@ TEST(HypothesisCheck, CellsNoRobotObservesHoldNoWalls) {
   for (double x = 0.525; x < 2.5; x += 0.05) {
     h.grid.add_log_odds(h.grid.cell_at(x, 1.775), -1000);  // free before the wall, right
     h.grid.add_log_odds(h.grid.cell_at(x, 1.825), 3000);   // the wall's face, right
-    for (double y = 2.025; y < 2.5; y += 0.05)
-      h.grid.add_log_odds(h.grid.cell_at(x, y), -1000);  // beyond
+    for (double y = 2.025; y < 2.5; y += 0.05) h.grid.add_log_odds(h.grid.cell_at(x, y), -1000);  // beyond
   }
-  const std::vector<std::uint8_t> observable =
-      observable_cells(world, reachable_free_area(world, {2.5, 1.0}, 0.1));
+  const std::vector<std::uint8_t> observable = observable_cells(world, reachable_free_area(world, {2.5, 1.0}, 0.1));
   EXPECT_EQ(observable[static_cast<std::size_t>(37 * world.width() + 50)],
             1);  // the wall's face (y 1.85)
   EXPECT_EQ(observable[static_cast<std::size_t>(39 * world.width() + 50)],

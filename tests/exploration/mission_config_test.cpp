@@ -53,13 +53,11 @@ TEST(MissionConfig, LeftOutKeysKeepTheBase) {
   EXPECT_DOUBLE_EQ(o.robot.max_speed, 0.4);
   EXPECT_DOUBLE_EQ(o.follower.max_linear_speed, 0.4);  // harmonized
   EXPECT_EQ(o.slam.particles, MissionOptions::defaults().slam.particles);
-  EXPECT_EQ(dump_mission_options(parse_mission_options("", "x")),
-            dump_mission_options(MissionOptions::defaults()));
+  EXPECT_EQ(dump_mission_options(parse_mission_options("", "x")), dump_mission_options(MissionOptions::defaults()));
 }
 
 TEST(MissionConfig, UnknownKeyNamesFileLineAndKey) {
-  const slam::ParseError e =
-      parse_error("mission:\n  seed: 3\nrobot:\n  radius: 0.2\n  raduis: 0.3\n");
+  const slam::ParseError e = parse_error("mission:\n  seed: 3\nrobot:\n  radius: 0.2\n  raduis: 0.3\n");
   EXPECT_EQ(e.file(), "my.yaml");
   EXPECT_EQ(e.line(), 5u);
   EXPECT_EQ(e.field(), "robot.raduis");
@@ -98,8 +96,8 @@ TEST(MissionConfig, ImpossibleValuesAreParseErrorsNamingTheFile) {
 
 // The slam body goes to the SLAM loader; its errors keep this file's line numbers.
 TEST(MissionConfig, SlamSectionKeepsLineNumbers) {
-  const MissionOptions o = parse_mission_options(
-      "mission:\n  seed: 5\nslam:\n  filter:\n    particles: 7\n  motion:\n    srr: 0.2\n", "x");
+  const MissionOptions o =
+      parse_mission_options("mission:\n  seed: 5\nslam:\n  filter:\n    particles: 7\n  motion:\n    srr: 0.2\n", "x");
   EXPECT_EQ(o.slam.particles, 7);
   EXPECT_DOUBLE_EQ(o.slam.motion.srr, 0.2);
   const slam::ParseError e = parse_error(
@@ -143,7 +141,8 @@ TEST(MissionConfig, MotionModelProposalChangesOnlyTheProposal) {
 
 // The escape switches of adopted behaviours are gone: a file that sets one is told so.
 TEST(MissionConfig, RetiredKeysAreUnknown) {
-  for (const char* key : {"squeeze_when_blocked", "progress_along_path", "gain_line_of_sight", "backtrack", "squeeze"}) {
+  for (const char* key :
+       {"squeeze_when_blocked", "progress_along_path", "gain_line_of_sight", "backtrack", "squeeze"}) {
     const slam::ParseError e = parse_error(std::string("mission:\n  ") + key + ": true\n");
     EXPECT_EQ(e.field(), std::string("mission.") + key);
     EXPECT_EQ(e.line(), 2u);
@@ -185,7 +184,7 @@ TEST(MissionConfig, P2ExploreRobotFileIsTheStudiesRobot) {
   EXPECT_DOUBLE_EQ(o.robot.max_speed, 0.2);
   EXPECT_NEAR(o.laser.fov, 2.0 * M_PI, 1e-6);
   EXPECT_DOUBLE_EQ(o.laser.max_range, 12.0);
-  EXPECT_DOUBLE_EQ(o.slam.likelihood.max_range, 12.0);            // harmonized
+  EXPECT_DOUBLE_EQ(o.slam.likelihood.max_range, 12.0);                      // harmonized
   EXPECT_DOUBLE_EQ(o.planner.costmap.robot_radius, 0.1 + o.safety_margin);  // harmonized
 }
 
@@ -213,8 +212,7 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(e.line(), 2u);
   EXPECT_EQ(e.field(), "lookahead.skip");
   EXPECT_EQ(e.value(), "some");
-  EXPECT_EQ(parse_mission_options("lookahead:\n  skip: far_side\n", "x").lookahead.skip,
-            SkipVariant::kFarSide);
+  EXPECT_EQ(parse_mission_options("lookahead:\n  skip: far_side\n", "x").lookahead.skip, SkipVariant::kFarSide);
   EXPECT_EQ(MissionOptions::defaults().lookahead.skip, SkipVariant::kRegion);
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_wall_gap: -0.5\n").file(), "my.yaml");
   EXPECT_EQ(parse_error("lookahead:\n  skip_region_radius: 0\n").file(),
@@ -227,12 +225,10 @@ TEST(MissionConfig, LookaheadAndPredictionGarbageIsRejected) {
   EXPECT_EQ(parse_error("lookahead:\n  large_surroundings_diameter: -14\n").file(), "my.yaml");  // out of range
   EXPECT_EQ(parse_error("lookahead:\n  large_max_conflict_share: 2\n").file(), "my.yaml");
   // The defaults keep the boundary and the slivers on; the share rule has no regions and ignores them.
-  EXPECT_NO_THROW(
-      parse_mission_options("lookahead:\n  skip: far_side\n  known_boundary: true\n", "x"));
+  EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip: far_side\n  known_boundary: true\n", "x"));
   EXPECT_EQ(parse_error("lookahead:\n  skip_wall_slivers: maybe\n").value(), "maybe");
   // Slivers are regions of the region rule: without a region there are none.
-  EXPECT_NO_THROW(
-      parse_mission_options("lookahead:\n  skip: far_side\n  skip_wall_slivers: true\n", "x"));
+  EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip: far_side\n  skip_wall_slivers: true\n", "x"));
   EXPECT_NO_THROW(parse_mission_options("lookahead:\n  skip_region_radius: 5\n  skip_wall_slivers: true\n", "x"));
   e = parse_error("slam:\n  prediction:\n    hit_ratio_threshold: high\n");
   EXPECT_EQ(e.line(), 3u);

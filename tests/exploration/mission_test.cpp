@@ -77,14 +77,15 @@ TEST(Mission, ClosedRoomEndsDone) {
 // slit, but no path leads there.
 TEST(Mission, FrontierBehindANarrowSlitEndsTrapped) {
   World world(300, 100, 0.05, {0, 0}, World::kOccupied);
-  world.fill_rect({0.5, 0.5}, {4.0, 4.5}, World::kFree);    // the robot's room
-  world.fill_rect({4.0, 2.4}, {4.6, 2.6}, World::kFree);    // the slit
-  world.fill_rect({4.6, 0.5}, {14.5, 4.5}, World::kFree);   // the hall
+  world.fill_rect({0.5, 0.5}, {4.0, 4.5}, World::kFree);   // the robot's room
+  world.fill_rect({4.0, 2.4}, {4.6, 2.6}, World::kFree);   // the slit
+  world.fill_rect({4.6, 0.5}, {14.5, 4.5}, World::kFree);  // the hall
   MissionOptions o = quick(PoseSource::kTruth);
   o.coverage_goal = 1.0;
   Mission m(world, {2.0, 2.5, 0.0}, o);
   EXPECT_EQ(m.run(), MissionStatus::kTrapped);
-  if (std::getenv("LOOKAHEAD_DEBUG_DIR")) write_mission_outputs(m, summarize(m, "slit", 1), std::getenv("LOOKAHEAD_DEBUG_DIR"));
+  if (std::getenv("LOOKAHEAD_DEBUG_DIR"))
+    write_mission_outputs(m, summarize(m, "slit", 1), std::getenv("LOOKAHEAD_DEBUG_DIR"));
   EXPECT_EQ(m.statistics().collisions, 0);
 }
 

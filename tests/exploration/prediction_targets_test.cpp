@@ -2,15 +2,16 @@
 // Which frontiers look-ahead mapping predicts: at a selection the chosen goal and its nearest
 // neighbours; while the predictor is idle the nearest frontiers the look-ahead map does not
 // cover and that were not tried lately (and again once the memory of a try expires).
+#include "lookahead/exploration/prediction_targets.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "hand_made_grid.hpp"
 #include "lookahead/exploration/generated_worlds.hpp"
 #include "lookahead/exploration/mission.hpp"
 #include "lookahead/exploration/mission_report.hpp"
-#include "lookahead/exploration/prediction_targets.hpp"
-#include "hand_made_grid.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -97,8 +98,8 @@ TEST(PredictionTargets, TheChosenGoalFirstThenTheNearestInAStraightLine) {
   EXPECT_EQ(t[1], std::make_pair(0.5, 1.5));
   const PredictedMap nothing_predicted;
   const GoalBlacklist tried({1.0, 10.0, 1000});
-  t = unpredicted_frontier_targets(room.clusters, room.map, nothing_predicted, SkipRule{}, 1.0, tried, 0.0,
-                                   room.robot, 1);
+  t = unpredicted_frontier_targets(room.clusters, room.map, nothing_predicted, SkipRule{}, 1.0, tried, 0.0, room.robot,
+                                   1);
   ASSERT_EQ(t.size(), 1u);
   EXPECT_EQ(t[0], std::make_pair(0.5, 1.5));
 }

@@ -28,8 +28,8 @@ TEST(Shard, ParsesIOfN) {
   EXPECT_EQ(s.index, 3u);
   EXPECT_EQ(s.count, 8u);
   EXPECT_EQ(parse_shard("0/1").count, 1u);
-  for (const char* bad : {"", "3", "3/", "/8", "8/8", "9/8", "0/0", "-1/8", "1 /8", "1/8 ", "a/b",
-                          "1/8/2", "+1/8", "1.0/8", "99999999999999999999/1"}) {
+  for (const char* bad : {"", "3", "3/", "/8", "8/8", "9/8", "0/0", "-1/8", "1 /8", "1/8 ", "a/b", "1/8/2", "+1/8",
+                          "1.0/8", "99999999999999999999/1"}) {
     EXPECT_THROW(parse_shard(bad), std::invalid_argument) << bad;
   }
   try {
@@ -68,8 +68,7 @@ TEST(Shard, ShardsPartitionThePlan) {
       for (std::size_t i = 0; i < n; ++i) {
         for (const std::size_t m : shard_missions(missions, {i, n})) ++seen.at(m);
       }
-      for (std::size_t m = 0; m < missions; ++m)
-        EXPECT_EQ(seen[m], 1) << m << " of " << missions << " in " << n;
+      for (std::size_t m = 0; m < missions; ++m) EXPECT_EQ(seen[m], 1) << m << " of " << missions << " in " << n;
     }
   }
 }
@@ -148,8 +147,7 @@ TEST(StudyPlan, CheckRefusesAChangedStudy) {
     FAIL();
   } catch (const slam::ParseError& e) {
     EXPECT_EQ(e.line(), 2u);  // the first mission's row
-    EXPECT_NE(std::string(e.what()).find(plan_missions(changed)[0].id), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find(plan_missions(changed)[0].id), std::string::npos) << e.what();
   }
   StudySpec fewer = spec;
   fewer.seeds = {1, 2};
@@ -190,12 +188,11 @@ TEST(StudySlurm, ScriptsRunTheShardsAndMergeAfterThem) {
   o.partition = "cpu";
   o.time = "1:00:00";
   const std::string array = slurm_array_script(o);
-  for (const char* line :
-       {"#SBATCH --array=0-39%8\n", "#SBATCH --cpus-per-task=4\n", "#SBATCH --partition=cpu\n",
-        "#SBATCH --time=1:00:00\n", "#SBATCH --chdir=/shared\n",
-        "#SBATCH --output=/shared/out/s/slurm/logs/array_%A_%a.log\n",
-        "exec '/opt/my lookahead/lookahead' study run '/shared/s.yaml' --shard "
-        "\"${SLURM_ARRAY_TASK_ID}/40\" --jobs 4\n"})
+  for (const char* line : {"#SBATCH --array=0-39%8\n", "#SBATCH --cpus-per-task=4\n", "#SBATCH --partition=cpu\n",
+                           "#SBATCH --time=1:00:00\n", "#SBATCH --chdir=/shared\n",
+                           "#SBATCH --output=/shared/out/s/slurm/logs/array_%A_%a.log\n",
+                           "exec '/opt/my lookahead/lookahead' study run '/shared/s.yaml' --shard "
+                           "\"${SLURM_ARRAY_TASK_ID}/40\" --jobs 4\n"})
     EXPECT_NE(array.find(line), std::string::npos) << line << array;
   EXPECT_NE(slurm_merge_script(o).find("study merge '/shared/s.yaml'"), std::string::npos);
   EXPECT_NE(slurm_submit_script(o).find("--dependency=afterany:\"$array\""), std::string::npos);

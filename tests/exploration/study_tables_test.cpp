@@ -34,9 +34,8 @@ StudyResult hand_made(const StudySpec& spec) {
 }
 
 TEST(StudyTables, OverallStatusAndPairs) {
-  const StudySpec spec = parse_study(
-      "name: t\nworlds: [{name: maze}]\nstrategies: [nearest, utility]\nseeds: [1, 2, 3]\n",
-      "t.yaml", ".");
+  const StudySpec spec =
+      parse_study("name: t\nworlds: [{name: maze}]\nstrategies: [nearest, utility]\nseeds: [1, 2, 3]\n", "t.yaml", ".");
   const StudyResult result = hand_made(spec);
   EXPECT_EQ(overall_line(spec, result),
             "4 of 5 missions reached the coverage goal of 0.95 (nearest 2/2, utility 2/3); 1 of 6 "
@@ -65,9 +64,8 @@ TEST(StudyTables, OverallStatusAndPairs) {
 
 TEST(StudyHtml, EscapesAndLinksEveryMap) {
   EXPECT_EQ(html_escape("<a href=\"x\">&'"), "&lt;a href=&quot;x&quot;&gt;&amp;&#39;");
-  const StudySpec spec = parse_study(
-      "name: t\nworlds: [{name: maze}]\nstrategies: [nearest, utility]\nseeds: [1, 2, 3]\n",
-      "t.yaml", ".");
+  const StudySpec spec =
+      parse_study("name: t\nworlds: [{name: maze}]\nstrategies: [nearest, utility]\nseeds: [1, 2, 3]\n", "t.yaml", ".");
   const std::string html = study_report_html(spec, hand_made(spec));
   std::size_t maps = 0;
   for (std::size_t at = html.find("<a href=\"runs/"); at != std::string::npos;

@@ -52,8 +52,7 @@ TEST(Welch, HandComputedExample) {
   EXPECT_NEAR(r.p, 0.107531195, 1e-7);
   EXPECT_DOUBLE_EQ(r.mean_difference, -3.0);
   // Unequal sizes: means 20.5 / 24.2, variances 2.276 / 3.5667 -> t -3.2819, df 5.4984, p 0.019057.
-  const WelchResult u =
-      welch_t_test({19.1, 21.3, 20.2, 22.8, 18.7, 20.9}, {23.4, 25.1, 22.0, 26.3});
+  const WelchResult u = welch_t_test({19.1, 21.3, 20.2, 22.8, 18.7, 20.9}, {23.4, 25.1, 22.0, 26.3});
   EXPECT_NEAR(u.t, -3.28192724, 1e-7);
   EXPECT_NEAR(u.df, 5.49840209, 1e-7);
   EXPECT_NEAR(u.p, 0.0190572818, 1e-8);
@@ -77,9 +76,7 @@ TEST(StudyReport, MeanCoverageCurveInterpolatesAndHolds) {
   EXPECT_NEAR(m[4], (1.0 + 0.6) / 2, 1e-12);
 }
 
-StudySpec parse(const std::string& yaml) {
-  return parse_study(yaml, "study.yaml", "/data/studies");
-}
+StudySpec parse(const std::string& yaml) { return parse_study(yaml, "study.yaml", "/data/studies"); }
 
 slam::ParseError study_error(const std::string& yaml) {
   try {
@@ -130,8 +127,7 @@ TEST(StudyConfig, MalformedFilesNameTheLine) {
   e = study_error(kHead + "seeds: [1, x]\n");
   EXPECT_EQ(e.line(), 5u);
   EXPECT_EQ(e.value(), "x");
-  e = study_error(
-      "name: s\nworlds:\n  - {name: office, resoluton: 2}\nstrategies: [nearest]\nseeds: [1]\n");
+  e = study_error("name: s\nworlds:\n  - {name: office, resoluton: 2}\nstrategies: [nearest]\nseeds: [1]\n");
   EXPECT_EQ(e.line(), 3u);
   EXPECT_EQ(e.field(), "worlds.resoluton");
   EXPECT_EQ(study_error(kHead + "seeds: [1]\npose_source: gps\n").line(), 6u);
@@ -144,13 +140,9 @@ TEST(StudyConfig, MalformedFilesNameTheLine) {
   EXPECT_GE(study_error(kHead + "seeds: [1]\nname: [\n").line(),
             6u);  // YAML syntax: where it is noticed
   EXPECT_EQ(study_error("name: s\nworlds: []\nstrategies: [nearest]\nseeds: [1]\n").line(), 2u);
-  EXPECT_EQ(study_error(
-                "name: s\nworlds:\n  - {name: office}\nstrategies: [nearest, zigzag]\nseeds: [1]\n")
-                .line(),
+  EXPECT_EQ(study_error("name: s\nworlds:\n  - {name: office}\nstrategies: [nearest, zigzag]\nseeds: [1]\n").line(),
             4u);
-  e = study_error(
-      kHead +
-      "seeds: [1]\nmission:\n  robot:\n    radius: 0.2\n  slam:\n    filter:\n      partcles: 3\n");
+  e = study_error(kHead + "seeds: [1]\nmission:\n  robot:\n    radius: 0.2\n  slam:\n    filter:\n      partcles: 3\n");
   EXPECT_EQ(e.line(), 11u);  // the slam section inside the mission block keeps the study's lines
   EXPECT_EQ(e.field(), "filter.partcles");
   e = study_error(kHead + "seeds: [1]\ntime_limit: 60\nmission:\n  mission:\n    time_limit: 90\n");
@@ -171,10 +163,9 @@ TEST(Study, TinyStudyWritesTablesAndResumes) {
   planner::set_ompl_log_level(planner::OmplLogLevel::kWarn);
   const slam::test::TempPath dir;
   fs::create_directories(dir.str());
-  std::ofstream(dir.str() + "/tiny.yaml")
-      << "name: tiny\nout: " << dir.str() << "/out\nworlds:\n  - {name: office}\n"
-      << "strategies: [nearest, utility]\nseeds: [1, 2]\npose_source: truth\n"
-      << "time_limit: 60\n";
+  std::ofstream(dir.str() + "/tiny.yaml") << "name: tiny\nout: " << dir.str() << "/out\nworlds:\n  - {name: office}\n"
+                                          << "strategies: [nearest, utility]\nseeds: [1, 2]\npose_source: truth\n"
+                                          << "time_limit: 60\n";
   const StudySpec spec = load_study(dir.str() + "/tiny.yaml");
   std::size_t calls = 0;
   const StudyResult first = run_study(spec, [&](const StudyProgress& p) {
@@ -186,8 +177,7 @@ TEST(Study, TinyStudyWritesTablesAndResumes) {
   write_study_outputs(spec, first);
   const std::string out = spec.out;
   EXPECT_EQ(data_rows(out + "/results.csv"), 4u);
-  for (const char* f : {"/summary.md", "/coverage_office.png", "/time_to_95.png",
-                        "/runs/office__utility__2/map.png"}) {
+  for (const char* f : {"/summary.md", "/coverage_office.png", "/time_to_95.png", "/runs/office__utility__2/map.png"}) {
     EXPECT_TRUE(fs::exists(out + f)) << f;
   }
   for (const StudyRunResult& r : first.runs) {

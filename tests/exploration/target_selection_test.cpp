@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "hand_made_grid.hpp"
 #include "lookahead/exploration/goal_blacklist.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
-#include "hand_made_grid.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -18,11 +18,8 @@ using slam::OccupancyGrid;
 class SkipsAll : public TargetStrategy {
  public:
   [[nodiscard]] std::string name() const override { return "skips-all"; }
-  [[nodiscard]] std::optional<std::size_t> choose(const std::vector<Candidate>&) const override {
-    return std::nullopt;
-  }
-  [[nodiscard]] std::optional<std::size_t> choose_any(
-      const std::vector<Candidate>& c) const override {
+  [[nodiscard]] std::optional<std::size_t> choose(const std::vector<Candidate>&) const override { return std::nullopt; }
+  [[nodiscard]] std::optional<std::size_t> choose_any(const std::vector<Candidate>& c) const override {
     return NearestFrontierStrategy().choose(c);
   }
 };

@@ -18,7 +18,7 @@ TEST(TargetStrategy, NearestPicksTheCheapestPath) {
 
 TEST(TargetStrategy, UtilityTradesGainAgainstCost) {
   const std::vector<Candidate> c{{nullptr, 5.0, 100.0}, {nullptr, 2.0, 1.0}, {nullptr, 3.0, 50.0}};
-  EXPECT_EQ(UtilityStrategy(1.0).choose(c), 0u);   // 95 beats 47 and -1
+  EXPECT_EQ(UtilityStrategy(1.0).choose(c), 0u);  // 95 beats 47 and -1
   // With travel dominating: 100-150 = -50, 1-60 = -59, 50-90 = -40.
   EXPECT_EQ(UtilityStrategy(30.0).choose(c), 2u);
 }

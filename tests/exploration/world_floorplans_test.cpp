@@ -26,9 +26,12 @@ std::vector<std::string> split_csv(const std::string& line) {
   std::vector<std::string> out(1);
   bool quoted = false;
   for (const char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) out.emplace_back();
-    else out.back() += c;
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      out.emplace_back();
+    else
+      out.back() += c;
   }
   return out;
 }
@@ -96,7 +99,7 @@ TEST(WorldLoader, LoadsEveryFloorPlanInTheIndex) {
     const World w = load_indexed(row.at("file"));
     const double free_fraction = static_cast<double>(w.free_cell_count()) / w.cells().size();
     EXPECT_GT(free_fraction, 0.05);
-    EXPECT_LT(free_fraction, 0.99);  // Stage line drawings are free outside the walls too
+    EXPECT_LT(free_fraction, 0.99);           // Stage line drawings are free outside the walls too
     if (row.at("width_m").empty()) continue;  // SRI K-wing: no size known
     // Willow and the LSE arena are turned 90 deg by their .world pose: compare unordered.
     std::vector<double> got{w.width_m(), w.height_m()};
@@ -149,8 +152,8 @@ std::map<std::string, double> sources_table(int name_col, int value_col) {
 }
 
 TEST(WorldLoader, LoadsEveryKthPlanWithItsDocumentedArea) {
-  const auto p2_free = sources_table(0, 4);     // P2 rows: free area column
-  const auto mapex_valid = sources_table(0, 4); // MapEx rows: valid space column
+  const auto p2_free = sources_table(0, 4);      // P2 rows: free area column
+  const auto mapex_valid = sources_table(0, 4);  // MapEx rows: valid space column
   int p2 = 0;
   for (const auto& row : read_csv(kPlans / "kth" / "kth_index.csv")) {
     const std::string file = row.at("file");
@@ -171,8 +174,8 @@ TEST(WorldLoader, LoadsEveryKthPlanWithItsDocumentedArea) {
     SCOPED_TRACE(dir.path().string());
     const World occ = load_image_world((dir.path() / "occ_map.png").string(), {0.05, {0, 0}, {}});
     // valid_space: 0 = not room space, k >= 1 = room id.
-    const World valid = load_image_world((dir.path() / "valid_space.png").string(),
-                                         {0.05, {0, 0}, {0.0, false, PixelChannel::kMean}});
+    const World valid =
+        load_image_world((dir.path() / "valid_space.png").string(), {0.05, {0, 0}, {0.0, false, PixelChannel::kMean}});
     EXPECT_EQ(occ.width(), valid.width());
     EXPECT_NEAR(valid.free_area_m2(), mapex_valid.at(dir.path().filename().string()), 1.0);
     EXPECT_GT(occ.width_m(), 39.0);

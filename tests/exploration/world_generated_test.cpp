@@ -60,9 +60,9 @@ TEST(GeneratedWorlds, PslamMazeMatchesThePaper) {
   EXPECT_EQ(g.world.width(), 508);
   // 625 m^2 minus 16 blocks of 3.5 m x 3.5 m.
   EXPECT_NEAR(g.world.free_area_m2(), 625.0 - 16 * 3.5 * 3.5, 1e-6);
-  EXPECT_TRUE(g.world.is_occupied(2.2 + 1.75, 2.2 + 1.75));   // first block's centre
-  EXPECT_FALSE(g.world.is_occupied(2.2 + 3.5 + 1.1, 3.95));   // corridor between blocks
-  EXPECT_TRUE(g.world.is_occupied(-0.1, 12.0));               // boundary wall
+  EXPECT_TRUE(g.world.is_occupied(2.2 + 1.75, 2.2 + 1.75));  // first block's centre
+  EXPECT_FALSE(g.world.is_occupied(2.2 + 3.5 + 1.1, 3.95));  // corridor between blocks
+  EXPECT_TRUE(g.world.is_occupied(-0.1, 12.0));              // boundary wall
   EXPECT_FALSE(g.world.is_occupied(24.9, 24.9));
   const ReachableArea point = reachable_free_area(g.world, {g.start.x, g.start.y}, 0.0);
   EXPECT_EQ(point.reachable_cells, g.world.free_cell_count());

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Loaders on hand-made files: orientation, pixel rules, and errors that name file and line.
+#include "lookahead/exploration/world_loader.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-#include "lookahead/exploration/world_loader.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 #include "temp_file.hpp"
 

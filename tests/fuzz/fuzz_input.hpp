@@ -20,8 +20,8 @@ class InputFile {
       : path_((std::filesystem::temp_directory_path() /
                ("lookahead-fuzz-" + std::to_string(getpid()) + "-" + std::to_string(counter_++) + suffix))
                   .string()) {
-    std::ofstream(path_, std::ios::binary).write(reinterpret_cast<const char*>(data),
-                                                 static_cast<std::streamsize>(size));
+    std::ofstream(path_, std::ios::binary)
+        .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
   ~InputFile() { std::filesystem::remove(path_); }
   InputFile(const InputFile&) = delete;

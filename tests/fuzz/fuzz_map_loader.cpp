@@ -15,11 +15,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::size_t cut = text.find(separator);
   const std::string yaml = text.substr(0, cut);
   const std::string image = cut == std::string::npos ? "" : text.substr(cut + separator.size());
-  const lookahead::fuzz::InputFile image_file(reinterpret_cast<const std::uint8_t*>(image.data()),
-                                              image.size(), ".pgm");
+  const lookahead::fuzz::InputFile image_file(reinterpret_cast<const std::uint8_t*>(image.data()), image.size(),
+                                              ".pgm");
   const std::string with_path = "image: " + image_file.path() + "\n" + yaml;
-  const lookahead::fuzz::InputFile yaml_file(reinterpret_cast<const std::uint8_t*>(with_path.data()),
-                                             with_path.size(), ".yaml");
+  const lookahead::fuzz::InputFile yaml_file(reinterpret_cast<const std::uint8_t*>(with_path.data()), with_path.size(),
+                                             ".yaml");
   try {
     (void)lookahead::slam::read_map(yaml_file.path());
   } catch (const std::exception&) {

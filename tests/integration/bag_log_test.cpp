@@ -67,7 +67,8 @@ void expect_same_trajectory(const std::vector<Pose2>& a, const std::vector<Pose2
   ASSERT_EQ(a.size(), b.size());
   double worst = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    worst = std::max({worst, std::hypot(a[i].x - b[i].x, a[i].y - b[i].y), std::abs(normalize_angle(a[i].theta - b[i].theta))});
+    worst = std::max(
+        {worst, std::hypot(a[i].x - b[i].x, a[i].y - b[i].y), std::abs(normalize_angle(a[i].theta - b[i].theta))});
   }
   EXPECT_LT(worst, 1e-6) << "largest pose difference";
 }
@@ -112,7 +113,8 @@ TEST(BagFromCarmen, SlamOnABagWritesATumTrajectoryThatEvalReadsBack) {
   write_bag(fr101_prefix(), bag, {});
   const fs::path out = temp("slam-out");
   const std::string bin = LOOKAHEAD_BINARY;
-  const Shell slam = shell(bin + " slam " + bag + " --particles 5 --seed 2 --threads 1 --max-scans 120 --out " + out.string());
+  const Shell slam =
+      shell(bin + " slam " + bag + " --particles 5 --seed 2 --threads 1 --max-scans 120 --out " + out.string());
   ASSERT_EQ(slam.code, 0) << slam.output;
   ASSERT_TRUE(fs::exists(out / "trajectory.tum"));
   ASSERT_TRUE(fs::exists(out / "run.json"));

@@ -2,13 +2,13 @@
 // The `lookahead` command end to end: outputs of a run, and bad input ending with a clear
 // error and a non-zero exit.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <unistd.h>
 
 namespace {
 
@@ -92,8 +92,8 @@ namespace {
 TEST_F(Cli, ExploreWritesMapPicturesAnimationAndRunJson) {
   const Result r = shell(bin + " explore --time-limit 40 --particles 5 --log --out " + dir.string());
   ASSERT_EQ(r.code, 0) << r.output;
-  for (const char* f : {"map.pgm", "map.yaml", "map.png", "coverage.png", "animation.mp4", "trajectory.txt",
-                        "run.json", "run.log"}) {
+  for (const char* f :
+       {"map.pgm", "map.yaml", "map.png", "coverage.png", "animation.mp4", "trajectory.txt", "run.json", "run.log"}) {
     EXPECT_TRUE(fs::exists(dir / f)) << f;
   }
   nlohmann::json j;
@@ -102,7 +102,8 @@ TEST_F(Cli, ExploreWritesMapPicturesAnimationAndRunJson) {
   EXPECT_EQ(j["collisions"].get<int>(), 0);
   EXPECT_GT(j["coverage"].get<double>(), 0.02);
   // The simulated run replays through `lookahead slam`.
-  const Result replay = shell(bin + " slam " + (dir / "run.log").string() + " --particles 5 --out " + (dir / "replay").string());
+  const Result replay =
+      shell(bin + " slam " + (dir / "run.log").string() + " --particles 5 --out " + (dir / "replay").string());
   EXPECT_EQ(replay.code, 0) << replay.output;
 }
 

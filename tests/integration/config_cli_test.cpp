@@ -42,8 +42,7 @@ TEST(ConfigCli, EveryShippedDefaultFileIsTheDump) {
     const Result r = run(std::string("config dump ") + section);
     ASSERT_EQ(r.code, 0) << r.output;
     EXPECT_EQ(r.output, read(kSource / "config" / section / "default.yaml"))
-        << "regenerate with: lookahead config dump " << section << " > config/" << section
-        << "/default.yaml";
+        << "regenerate with: lookahead config dump " << section << " > config/" << section << "/default.yaml";
   }
 }
 

@@ -28,7 +28,8 @@ TEST(HybridCli, MapsTheFirstScansOfFr101AndScoresThem) {
   const std::string log = std::string(LOOKAHEAD_SHARED_DIR) + "/data/fr101/fr101.carmen.log";
   if (!fs::exists(log)) GTEST_SKIP() << log << " not found";
   const fs::path out = temp_dir("fr101");
-  ASSERT_EQ(run("slam " + log + " --method hybrid --max-scans 800 --particles 30 --out " + out.string(), out / "log.txt"), 0);
+  ASSERT_EQ(
+      run("slam " + log + " --method hybrid --max-scans 800 --particles 30 --out " + out.string(), out / "log.txt"), 0);
   EXPECT_TRUE(fs::exists(out / "map.png"));
   EXPECT_TRUE(fs::exists(out / "trajectory.txt"));
   EXPECT_TRUE(fs::exists(out / "landmarks.txt"));
@@ -69,12 +70,16 @@ TEST(HybridCli, SimulationFiguresAndABadConfig) {
   // The paper's feature density (35 in 120 m x 120 m): 6 features in 50 m x 50 m.
   std::ofstream(out / "small.yaml") << "simulation:\n  world_size: 50\n  features: 6\n  inset: 8\n"
                                        "  loop_overlap: 10\nfastslam:\n  particles: 30\n";
-  ASSERT_EQ(run("hybrid-sim --no-study --config " + (out / "small.yaml").string() + " --out " + out.string(), out / "log.txt"), 0);
+  ASSERT_EQ(run("hybrid-sim --no-study --config " + (out / "small.yaml").string() + " --out " + out.string(),
+                out / "log.txt"),
+            0);
   for (const char* f : {"fig3_trace_compass.png", "fig4_trace.png", "nees.png", "world.png", "run.json"}) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
   }
   std::ofstream(out / "bad.yaml") << "fusion:\n  perod: 3\n";
-  EXPECT_EQ(run("hybrid-sim --no-study --config " + (out / "bad.yaml").string() + " --out " + out.string(), out / "bad.txt"), 2);
+  EXPECT_EQ(
+      run("hybrid-sim --no-study --config " + (out / "bad.yaml").string() + " --out " + out.string(), out / "bad.txt"),
+      2);
   std::ifstream in(out / "bad.txt");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("bad.yaml:2"), std::string::npos) << text;

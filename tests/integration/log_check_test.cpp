@@ -31,7 +31,8 @@ struct Check {
 
 Check check(const std::string& args) {
   const fs::path out = fs::temp_directory_path() / ("lookahead-check-" + std::to_string(::getpid()) + ".json");
-  const int status = std::system((std::string(LOOKAHEAD_BINARY) + " check --json " + args + " > " + out.string()).c_str());
+  const int status =
+      std::system((std::string(LOOKAHEAD_BINARY) + " check --json " + args + " > " + out.string()).c_str());
   std::stringstream text;
   text << std::ifstream(out).rdbuf();
   fs::remove(out);
@@ -82,7 +83,8 @@ TEST(LogCheck, CorrectedIntelLogHasGaps) {
 }
 
 TEST(LogCheck, FlirtlibLogsAreReadAndCanBeMapped) {
-  for (const char* name : {"derived-flirtlib/intel-lab.log", "derived-flirtlib/fr079.log", "derived-flirtlib/mit-cscail.log"}) {
+  for (const char* name :
+       {"derived-flirtlib/intel-lab.log", "derived-flirtlib/fr079.log", "derived-flirtlib/mit-cscail.log"}) {
     REQUIRE_DATA(name);
     const Check c = check(kData + name);
     EXPECT_GT(c.report["scans"].get<int>(), 100) << name;

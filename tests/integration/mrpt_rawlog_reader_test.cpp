@@ -19,14 +19,12 @@
 namespace lookahead::slam {
 namespace {
 
-const std::string kOneLoop =
-    "/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
+const std::string kOneLoop = "/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
 
 /// A file in the temp directory that is removed when the test ends.
 class TempFile {
  public:
-  explicit TempFile(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() / name) {}
+  explicit TempFile(const std::string& name) : path_(std::filesystem::temp_directory_path() / name) {}
   ~TempFile() {
     std::error_code ec;
     std::filesystem::remove(path_, ec);
@@ -49,7 +47,7 @@ std::vector<char> read_bytes(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-#define SKIP_WITHOUT_DATASET()                                               \
+#define SKIP_WITHOUT_DATASET() \
   if (!std::filesystem::exists(kOneLoop)) GTEST_SKIP() << "mrpt-common not installed: " << kOneLoop
 
 TEST(MrptRawlogReader, ReadsOneLoopDataset) {
@@ -108,8 +106,7 @@ TEST(MrptRawlogReader, ReadsOneLoopDataset) {
 }
 
 TEST(MrptRawlogReader, MissingFileThrowsParseError) {
-  const std::string missing =
-      (std::filesystem::temp_directory_path() / "lookahead_no_such_file.rawlog").string();
+  const std::string missing = (std::filesystem::temp_directory_path() / "lookahead_no_such_file.rawlog").string();
   try {
     (void)read_mrpt_rawlog(missing);
     FAIL() << "expected ParseError";

@@ -20,8 +20,8 @@ struct Result {
 };
 
 Result run(const std::string& args, const fs::path& log) {
-  const int status = std::system(
-      (std::string(LOOKAHEAD_BINARY) + " slam3d " + args + " > " + log.string() + " 2>&1").c_str());
+  const int status =
+      std::system((std::string(LOOKAHEAD_BINARY) + " slam3d " + args + " > " + log.string() + " 2>&1").c_str());
   std::ifstream in(log);
   std::stringstream text;
   text << in.rdbuf();
@@ -39,8 +39,8 @@ class Slam3dCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir); }
   /// A SegSLAM run with `flag value` fails, names the flag and the value, and writes no run.json.
   void expect_segslam_rejects(const std::string& flag, const std::string& value) {
-    const Result r = run("garage --method segslam --max-sweeps 3 " + flag + " " + value + " --out " + dir.string(),
-                         dir / "log.txt");
+    const Result r =
+        run("garage --method segslam --max-sweeps 3 " + flag + " " + value + " --out " + dir.string(), dir / "log.txt");
     EXPECT_NE(r.code, 0);
     EXPECT_NE(r.output.find(flag), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(value), std::string::npos) << r.output;
@@ -50,8 +50,7 @@ class Slam3dCli : public ::testing::Test {
 };
 
 TEST_F(Slam3dCli, GarageWritesMapPictureAndRunJson) {
-  const Result r =
-      run("garage --particles 2 --max-sweeps 6 --out " + dir.string(), dir / "log.txt");
+  const Result r = run("garage --particles 2 --max-sweeps 6 --out " + dir.string(), dir / "log.txt");
   ASSERT_EQ(r.code, 0) << r.output;
   for (const char* f : {"map.bt", "world.bt", "trajectory.png", "trajectory.txt", "run.json"}) {
     EXPECT_TRUE(fs::exists(dir / f)) << f;
@@ -92,9 +91,10 @@ TEST_F(Slam3dCli, SegslamWritesMapPictureAndRunJson) {
 }
 
 TEST_F(Slam3dCli, SearchPerParticleTurnsSegmentSharingOff) {
-  const Result r = run("garage --method segslam --particles 2 --max-sweeps 4 --map-samples 1 --search-per-particle --out " +
-                           dir.string(),
-                       dir / "log.txt");
+  const Result r =
+      run("garage --method segslam --particles 2 --max-sweeps 4 --map-samples 1 --search-per-particle --out " +
+              dir.string(),
+          dir / "log.txt");
   ASSERT_EQ(r.code, 0) << r.output;
   const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir / "run.json"));
   EXPECT_FALSE(j["share_by_segment"].get<bool>());
@@ -123,9 +123,9 @@ TEST_F(Slam3dCli, SegslamReadsTheLockingKeysAndCountsLockedAndMerged) {
 TEST_F(Slam3dCli, SegslamConfigErrorsNameTheKey) {
   const fs::path yaml = dir / "bad.yaml";
   std::ofstream(yaml) << "matching:\n  icp_sigmaa: 1\n";
-  const Result r = run("garage --method segslam --max-sweeps 3 --segslam-config '" + yaml.string() + "' --out " +
-                           dir.string(),
-                       dir / "log.txt");
+  const Result r =
+      run("garage --method segslam --max-sweeps 3 --segslam-config '" + yaml.string() + "' --out " + dir.string(),
+          dir / "log.txt");
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.output.find("icp_sigmaa"), std::string::npos) << r.output;
 }

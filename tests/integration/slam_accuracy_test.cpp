@@ -38,8 +38,8 @@ TEST(SlamAccuracy, IntelRelationsWithSyntheticOdometry) {
   const auto dir = std::filesystem::temp_directory_path() / "lookahead-accuracy-test";
   std::filesystem::create_directories(dir);
   const std::string synth = (dir / "intel-synth.log").string();
-  const std::string cmd = std::string(LOOKAHEAD_SYNTH_ODOMETRY) + " " + data("derived-flirtlib/intel-lab.log") +
-                          " " + synth + " --seed 1 > /dev/null";
+  const std::string cmd = std::string(LOOKAHEAD_SYNTH_ODOMETRY) + " " + data("derived-flirtlib/intel-lab.log") + " " +
+                          synth + " --seed 1 > /dev/null";
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   const LaserLog log = read_carmen_log(synth);
   const RelativeError e = relative_error(read_relations(data("intel/intel.relations")), run(log, false));

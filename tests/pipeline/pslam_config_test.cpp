@@ -6,9 +6,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "../slam/temp_file.hpp"
 #include "lookahead/pipeline/log_prediction_config.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
-#include "../slam/temp_file.hpp"
 #include "lookahead/slam/rbpf/slam_config.hpp"
 
 namespace lookahead::pipeline {
@@ -20,7 +20,8 @@ TEST(PslamConfig, ShippedDefaultsMatchTheCode) {
   ASSERT_TRUE(in) << "config/slam/default.yaml missing";
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_EQ(text.str(), dump_pslam_options({})) << "regenerate with: lookahead config dump slam > config/slam/default.yaml";
+  EXPECT_EQ(text.str(), dump_pslam_options({}))
+      << "regenerate with: lookahead config dump slam > config/slam/default.yaml";
   const PslamOptions shipped = load_pslam_options(std::string(LOOKAHEAD_SOURCE_DIR) + "/config/slam/default.yaml");
   EXPECT_EQ(dump_pslam_options(shipped), dump_pslam_options({}));
 }
@@ -49,8 +50,9 @@ TEST(PslamConfig, DumpReadsBackToTheSameOptions) {
 }
 
 TEST(PslamConfig, OneFileFeedsBothLoaders) {
-  const std::string text = "filter:\n  particles: 12\npredictor:\n  similarity_threshold: 0.7\n"
-                           "log_targets:\n  wait_for_predictions: false\n";
+  const std::string text =
+      "filter:\n  particles: 12\npredictor:\n  similarity_threshold: 0.7\n"
+      "log_targets:\n  wait_for_predictions: false\n";
   const slam::RbpfOptions rbpf = slam::parse_rbpf_options(text, "f.yaml", {}, log_prediction_section_names());
   const LogPredictionOptions p = parse_log_prediction_options(text, "f.yaml", {}, slam::rbpf_section_names());
   EXPECT_EQ(rbpf.particles, 12);

@@ -110,8 +110,10 @@ TEST(Costmap, UpdateOfAWindowEqualsARebuild) {
     std::uniform_int_distribution<int> wx(lo.x, hi.x), wy(lo.y, hi.y);
     for (int i = 0; i < 15; ++i) {
       const CellIndex w{wx(rng), wy(rng)};
-      if (i % 3 == 0) fill(g, w.x, w.y, w.x, w.y, false);  // a wall cell cleared
-      else set_occupied(g, w);
+      if (i % 3 == 0)
+        fill(g, w.x, w.y, w.x, w.y, false);  // a wall cell cleared
+      else
+        set_occupied(g, w);
     }
     c.update(g, lo, hi);
     const Costmap rebuilt(g, o);

@@ -22,8 +22,7 @@ double distance_to_path(const Path& path, Point2 p) {
     const Point2 a = path[i - 1];
     const Point2 b = path[i];
     const double dx = b.x - a.x, dy = b.y - a.y;
-    const double t =
-        std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+    const double t = std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
     best = std::min(best, distance(p, {a.x + t * dx, a.y + t * dy}));
   }
   return best;
@@ -36,8 +35,8 @@ Pose2 integrate(const Pose2& p, const VelocityCommand& c, double dt) {
   }
   const double theta = p.theta + c.omega * dt;
   const double r = c.v / c.omega;
-  return {p.x + r * (std::sin(theta) - std::sin(p.theta)),
-          p.y - r * (std::cos(theta) - std::cos(p.theta)), slam::normalize_angle(theta)};
+  return {p.x + r * (std::sin(theta) - std::sin(p.theta)), p.y - r * (std::cos(theta) - std::cos(p.theta)),
+          slam::normalize_angle(theta)};
 }
 
 // An L-shaped corridor, 1 m wide, along the path (0.5,0.5) -> (3.5,0.5) -> (3.5,3.5). The

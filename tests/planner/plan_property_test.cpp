@@ -28,8 +28,7 @@ OccupancyGrid random_world(std::mt19937& rng, bool split) {
   for (int i = 0; i < 14; ++i) {
     const int x = corner(rng);
     const int y = corner(rng);
-    testing::fill(g, x, y, std::min(kSide - 1, x + size(rng)),
-                  std::min(kSide - 1, y + size(rng) / 4), true);
+    testing::fill(g, x, y, std::min(kSide - 1, x + size(rng)), std::min(kSide - 1, y + size(rng) / 4), true);
   }
   if (split) {
     const int x = std::uniform_int_distribution<int>(20, 40)(rng);
@@ -51,8 +50,7 @@ bool oracle_reachable(const Oracle& o, slam::CellIndex from, slam::CellIndex to)
     const slam::CellIndex c = queue.front();
     queue.pop_front();
     if (c == to) return true;
-    const slam::CellIndex next[4] = {
-        {c.x + 1, c.y}, {c.x - 1, c.y}, {c.x, c.y + 1}, {c.x, c.y - 1}};
+    const slam::CellIndex next[4] = {{c.x + 1, c.y}, {c.x - 1, c.y}, {c.x, c.y + 1}, {c.x, c.y - 1}};
     for (const slam::CellIndex n : next) {
       if (o.cell_blocked(n.x, n.y)) continue;
       char& s = seen[static_cast<std::size_t>((n.y - o.origin.y) * o.width + n.x - o.origin.x)];
@@ -100,8 +98,8 @@ TEST(PlanProperty, NeverReturnsAnInvalidPathOnRandomWorlds) {
       const Point2 t = random_free_position(oracle, rng);
       const PlanResult r = plan(g, slam::Pose2{s.x, s.y, 0.0}, t.x, t.y, o);
       const bool reachable = oracle_reachable(oracle, extent.cell_at(s), extent.cell_at(t));
-      SCOPED_TRACE(::testing::Message() << "world " << world << " query " << query << " "
-                                        << to_string(o.algorithm) << ": " << r.message);
+      SCOPED_TRACE(::testing::Message() << "world " << world << " query " << query << " " << to_string(o.algorithm)
+                                        << ": " << r.message);
       EXPECT_EQ(r.guard_rejections, 0u);
       if (!reachable) {
         ++unreachable;

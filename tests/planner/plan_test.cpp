@@ -78,8 +78,7 @@ INSTANTIATE_TEST_SUITE_P(Planner, EachPlanner, ::testing::ValuesIn(kAll),
 
 TEST(Plan, UnreachableGoalIsNoPath) {
   const OccupancyGrid g = testing::corridor_with_gap(false);
-  const PlanResult r =
-      plan(g, Pose2{0.5, 0.5, 0.0}, 3.5, 0.5, sample_limited(PlannerAlgorithm::kRrtStar));
+  const PlanResult r = plan(g, Pose2{0.5, 0.5, 0.0}, 3.5, 0.5, sample_limited(PlannerAlgorithm::kRrtStar));
   EXPECT_EQ(r.status, PlanStatus::kNoPath);
   EXPECT_TRUE(r.path.empty());
   EXPECT_LT(r.planning_time, 1.0) << "the flood fill answers without spending the budget";
@@ -87,23 +86,19 @@ TEST(Plan, UnreachableGoalIsNoPath) {
 
 TEST(Plan, GoalInWallIsGoalBlocked) {
   const OccupancyGrid g = testing::corridor_with_gap();
-  const PlanResult r =
-      plan(g, Pose2{0.5, 0.5, 0.0}, 2.0, 0.5, sample_limited(PlannerAlgorithm::kRrtStar));
+  const PlanResult r = plan(g, Pose2{0.5, 0.5, 0.0}, 2.0, 0.5, sample_limited(PlannerAlgorithm::kRrtStar));
   EXPECT_EQ(r.status, PlanStatus::kGoalBlocked);
   // Within the robot radius of a wall counts as in it.
-  EXPECT_EQ(
-      plan(g, Pose2{0.5, 0.5, 0.0}, 1.75, 0.5, sample_limited(PlannerAlgorithm::kRrtStar)).status,
-      PlanStatus::kGoalBlocked);
+  EXPECT_EQ(plan(g, Pose2{0.5, 0.5, 0.0}, 1.75, 0.5, sample_limited(PlannerAlgorithm::kRrtStar)).status,
+            PlanStatus::kGoalBlocked);
   // Unknown space is blocked by default.
-  EXPECT_EQ(
-      plan(g, Pose2{0.5, 0.5, 0.0}, 10.0, 0.5, sample_limited(PlannerAlgorithm::kRrtStar)).status,
-      PlanStatus::kGoalBlocked);
+  EXPECT_EQ(plan(g, Pose2{0.5, 0.5, 0.0}, 10.0, 0.5, sample_limited(PlannerAlgorithm::kRrtStar)).status,
+            PlanStatus::kGoalBlocked);
 }
 
 TEST(Plan, StartInWallIsStartBlocked) {
   const OccupancyGrid g = testing::corridor_with_gap();
-  const PlanResult r =
-      plan(g, Pose2{2.0, 0.5, 0.0}, 3.5, 0.5, sample_limited(PlannerAlgorithm::kRrtStar));
+  const PlanResult r = plan(g, Pose2{2.0, 0.5, 0.0}, 3.5, 0.5, sample_limited(PlannerAlgorithm::kRrtStar));
   EXPECT_EQ(r.status, PlanStatus::kStartBlocked);
 }
 
@@ -113,8 +108,7 @@ TEST(Plan, NonFiniteInputOrEmptyMapIsInvalidInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(plan(g, Pose2{0.5, 0.5, 0.0}, nan, 0.5, o).status, PlanStatus::kInvalidInput);
   EXPECT_EQ(plan(g, Pose2{nan, 0.5, 0.0}, 3.5, 0.5, o).status, PlanStatus::kInvalidInput);
-  EXPECT_EQ(plan(OccupancyGrid{}, Pose2{0.5, 0.5, 0.0}, 3.5, 0.5, o).status,
-            PlanStatus::kInvalidInput);
+  EXPECT_EQ(plan(OccupancyGrid{}, Pose2{0.5, 0.5, 0.0}, 3.5, 0.5, o).status, PlanStatus::kInvalidInput);
 }
 
 TEST(Plan, TooFewSamplesIsNoPathNotAnApproximatePath) {
@@ -143,8 +137,7 @@ TEST(Plan, TimeBudgetIsRespected) {
 
 TEST(Plan, GoalWithinToleranceOfStartIsTrivial) {
   const OccupancyGrid g = testing::corridor_with_gap();
-  const PlanResult r =
-      plan(g, Pose2{0.5, 0.5, 0.0}, 0.55, 0.5, sample_limited(PlannerAlgorithm::kRrtStar));
+  const PlanResult r = plan(g, Pose2{0.5, 0.5, 0.0}, 0.55, 0.5, sample_limited(PlannerAlgorithm::kRrtStar));
   ASSERT_TRUE(r.solved());
   EXPECT_EQ(r.path.size(), 2u);
 }
@@ -153,8 +146,7 @@ TEST(Plan, CostmapOverloadMatchesGridOverload) {
   const OccupancyGrid g = testing::corridor_with_gap();
   const PlannerOptions o = sample_limited(PlannerAlgorithm::kRrtStar, 1000);
   const Costmap c(g, o.costmap);
-  EXPECT_EQ(plan(c, Pose2{0.5, 0.5, 0.0}, 3.5, 0.5, o).path,
-            plan(g, Pose2{0.5, 0.5, 0.0}, 3.5, 0.5, o).path);
+  EXPECT_EQ(plan(c, Pose2{0.5, 0.5, 0.0}, 3.5, 0.5, o).path, plan(g, Pose2{0.5, 0.5, 0.0}, 3.5, 0.5, o).path);
 }
 
 TEST(PlannerOptions, RejectsOutOfRangeValues) {
@@ -176,8 +168,7 @@ TEST(PlannerOptions, RejectsOutOfRangeValues) {
   EXPECT_THROW(validate(o), std::invalid_argument);
   o = {};
   o.goal_tolerance = -0.1;
-  EXPECT_THROW((void)plan(testing::corridor_with_gap(), Pose2{}, 1.0, 1.0, o),
-               std::invalid_argument);
+  EXPECT_THROW((void)plan(testing::corridor_with_gap(), Pose2{}, 1.0, 1.0, o), std::invalid_argument);
 }
 
 }  // namespace

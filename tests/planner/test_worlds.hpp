@@ -116,8 +116,7 @@ struct Oracle {
 
 /// Brute force: a cell is blocked if any raw-blocked cell of the extent has its centre
 /// within `radius` of this cell's centre.
-inline Oracle brute_force_costmap(const OccupancyGrid& g, const Costmap& extent,
-                                  const CostmapOptions& o) {
+inline Oracle brute_force_costmap(const OccupancyGrid& g, const Costmap& extent, const CostmapOptions& o) {
   Oracle oracle{extent.origin(), extent.width(), extent.height(), g.resolution(), {}};
   const auto raw_blocked = [&](int x, int y) {
     if (x < oracle.origin.x || y < oracle.origin.y || x >= oracle.origin.x + oracle.width ||

@@ -223,7 +223,7 @@ TEST(UnexploredRegion, SeedsBehindAWallNearTheTargetCount) {
   for (double x = 0.025; x < 9; x += 0.05) {
     if (x < 4)
       for (double y = 0.025; y < 2; y += 0.05) map.add_log_odds(map.cell_at(x, y), -1000);  // free
-    map.add_log_odds(map.cell_at(x, 2.025), 3000);  // the wall, y = 2
+    map.add_log_odds(map.cell_at(x, 2.025), 3000);                                          // the wall, y = 2
   }
   const std::vector<slam::CellIndex> region = unexplored_region(map, 2.0, 1.7, 8.0);
   const auto contains = [&](double x, double y) {

@@ -19,8 +19,8 @@ std::string ranges(int n, const std::string& value) {
 }
 
 std::string flaser(int n, double t, const std::string& r = "2.0") {
-  return "FLASER " + std::to_string(n) + " " + ranges(n, r) +
-         "1.0 2.0 0.0 1.04 2.0 0.0 " + std::to_string(t) + " host " + std::to_string(t - 100) + "\n";
+  return "FLASER " + std::to_string(n) + " " + ranges(n, r) + "1.0 2.0 0.0 1.04 2.0 0.0 " + std::to_string(t) +
+         " host " + std::to_string(t - 100) + "\n";
 }
 
 LaserLog read_text(const std::string& text, const LogReadOptions& o = {}) {
@@ -146,16 +146,13 @@ TEST(CarmenReader, OdometryJumpResetsTheMotionModel) {
   EXPECT_NEAR(log.scans[3].odometry.x, log.scans[2].odometry.x, 1e-9);  // and so does the jump back
 }
 
-TEST(CarmenReader, MissingFileIsAParseError) {
-  EXPECT_THROW(read_carmen_log("/nonexistent/dir/x.log"), ParseError);
-}
+TEST(CarmenReader, MissingFileIsAParseError) { EXPECT_THROW(read_carmen_log("/nonexistent/dir/x.log"), ParseError); }
 
 // Fuzz: garbage and mutated valid lines either parse or raise ParseError; never a crash,
 // never another exception, and with skip_bad_lines never an exception at all.
 TEST(CarmenReader, FuzzedInputNeverCrashes) {
   std::mt19937_64 rng(2024);
-  const std::string valid = flaser(10, 1.0) +
-                            "ROBOTLASER1 0 -1.57 3.14 0.349 50 0.1 0 10 " + ranges(10, "1.0") +
+  const std::string valid = flaser(10, 1.0) + "ROBOTLASER1 0 -1.57 3.14 0.349 50 0.1 0 10 " + ranges(10, "1.0") +
                             "0 1 2 0.1 1 2 0.1 0 0 0.5 0.3 1 55.5 h 5.5\nODOM 1 2 3 0 0 0 4 h 4\n";
   const std::string alphabet = "0123456789 .-+eEnaif\tFLASERODOM#\n\r\x01\xff";
   for (int trial = 0; trial < 400; ++trial) {
@@ -164,9 +161,14 @@ TEST(CarmenReader, FuzzedInputNeverCrashes) {
     for (int e = 0; e < edits; ++e) {
       const std::size_t pos = rng() % (text.size() + 1);
       switch (rng() % 3) {
-        case 0: text.insert(pos, 1, alphabet[rng() % alphabet.size()]); break;
-        case 1: if (pos < text.size()) text.erase(pos, 1 + rng() % 8); break;
-        default: if (pos < text.size()) text[pos] = alphabet[rng() % alphabet.size()];
+        case 0:
+          text.insert(pos, 1, alphabet[rng() % alphabet.size()]);
+          break;
+        case 1:
+          if (pos < text.size()) text.erase(pos, 1 + rng() % 8);
+          break;
+        default:
+          if (pos < text.size()) text[pos] = alphabet[rng() % alphabet.size()];
       }
     }
     try {

@@ -2,19 +2,18 @@
 #include "lookahead/slam/limits/input_limits.hpp"
 
 #include <gtest/gtest.h>
-
 #include <omp.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "lookahead/slam/rbpf/slam_config.hpp"
 #include "lookahead/slam/grid/occupancy_grid.hpp"
 #include "lookahead/slam/io/image_header.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 #include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/rbpf/rbpf.hpp"
+#include "lookahead/slam/rbpf/slam_config.hpp"
 #include "temp_file.hpp"
 
 namespace lookahead::slam {

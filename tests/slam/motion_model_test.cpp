@@ -17,8 +17,12 @@ TEST(OdometryMotionModel, SamplesHaveTheModelledSpread) {
   constexpr int kN = 20000;
   for (int i = 0; i < kN; ++i) {
     const Pose2 d = start.between(m.sample(start, u, rng));
-    mx += d.x; my += d.y; mt += d.theta;
-    vx += (d.x - 1) * (d.x - 1); vy += d.y * d.y; vt += d.theta * d.theta;
+    mx += d.x;
+    my += d.y;
+    mt += d.theta;
+    vx += (d.x - 1) * (d.x - 1);
+    vy += d.y * d.y;
+    vt += d.theta * d.theta;
   }
   EXPECT_NEAR(mx / kN, 1.0, 0.005);
   EXPECT_NEAR(my / kN, 0.0, 0.005);

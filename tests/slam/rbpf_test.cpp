@@ -26,8 +26,7 @@ std::vector<std::pair<Pose2, LaserScan>> drive() {
       const Pose2 step{leg.x / steps, 0, leg.theta / steps};
       truth = truth.compose(step);
       // Odometry: 3% scale error and a heading drift of 2 degrees per metre.
-      odom = odom.compose({step.x * 1.03 + 0.002 * n(rng), 0.002 * n(rng),
-                           step.theta * 1.02 + step.x * 0.035});
+      odom = odom.compose({step.x * 1.03 + 0.002 * n(rng), 0.002 * n(rng), step.theta * 1.02 + step.x * 0.035});
       out.push_back({truth, test::simulate_scan(world, truth, odom, t += 0.1)});
     }
   }

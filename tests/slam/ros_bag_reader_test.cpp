@@ -3,16 +3,15 @@
 // message states it, odometry interpolated to the scan stamps, the laser mounting from
 // /tf_static, and each bad bag's error naming the topic, frame or time.
 #include <gtest/gtest.h>
+#include <nav_msgs/Odometry.h>
+#include <rosbag/bag.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <algorithm>
-#include <rosbag/bag.h>
-
 #include <cmath>
 #include <filesystem>
 #include <limits>
-#include <nav_msgs/Odometry.h>
-#include <sensor_msgs/LaserScan.h>
-#include <tf2_msgs/TFMessage.h>
 
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
@@ -37,8 +36,8 @@ sensor_msgs::LaserScan laser_message(double t, const std::string& frame = "laser
   return m;
 }
 
-geometry_msgs::TransformStamped tf(double t, const std::string& parent, const std::string& child, double x,
-                                   double y, double yaw) {
+geometry_msgs::TransformStamped tf(double t, const std::string& parent, const std::string& child, double x, double y,
+                                   double yaw) {
   geometry_msgs::TransformStamped tr;
   tr.header.stamp = ros::Time(t);
   tr.header.frame_id = parent;
@@ -98,10 +97,10 @@ TEST(RosBagReader, ScanGeometryAsTheMessageStatesIt) {
   EXPECT_NEAR(s.angle_increment, 0.5, 1e-7);
   ASSERT_EQ(s.ranges.size(), 5u);
   EXPECT_FLOAT_EQ(s.ranges[4], 1.0f);  // reversed: the first beam of a CW scan is the last CCW
-  EXPECT_FALSE(s.is_return(0));         // 40 m >= range_max 30 m
-  EXPECT_FALSE(s.is_return(1));         // below range_min
-  EXPECT_FALSE(s.is_return(2));         // inf
-  EXPECT_FALSE(s.is_return(3));         // NaN
+  EXPECT_FALSE(s.is_return(0));        // 40 m >= range_max 30 m
+  EXPECT_FALSE(s.is_return(1));        // below range_min
+  EXPECT_FALSE(s.is_return(2));        // inf
+  EXPECT_FALSE(s.is_return(3));        // NaN
   EXPECT_TRUE(s.is_return(4));
   EXPECT_DOUBLE_EQ(s.max_range, 30.0);
 }

@@ -76,7 +76,10 @@ TEST(ScanInserter, TraceCellsIsConnectedAndEndsAtTarget) {
   for (int k = 0; k < 500; ++k) {
     const CellIndex a{c(rng), c(rng)}, b{c(rng), c(rng)};
     std::vector<CellIndex> cells;
-    trace_cells(a, b, [&](CellIndex x) { cells.push_back(x); return true; });
+    trace_cells(a, b, [&](CellIndex x) {
+      cells.push_back(x);
+      return true;
+    });
     ASSERT_EQ(cells.front(), a);
     ASSERT_EQ(cells.back(), b);
     ASSERT_EQ(cells.size(), static_cast<std::size_t>(std::max(std::abs(a.x - b.x), std::abs(a.y - b.y)) + 1));
@@ -93,7 +96,10 @@ bool crosses(double ax, double ay, double bx, double by, CellIndex c) {
   const auto clip = [&](double p, double q) {
     if (p == 0.0) return q >= -1e-9;
     const double r = q / p;
-    if (p < 0) t0 = std::max(t0, r); else t1 = std::min(t1, r);
+    if (p < 0)
+      t0 = std::max(t0, r);
+    else
+      t1 = std::min(t1, r);
     return t0 <= t1 + 1e-9;
   };
   return clip(-(bx - ax), ax - c.x) && clip(bx - ax, c.x + 1 - ax) && clip(-(by - ay), ay - c.y) &&
@@ -110,7 +116,10 @@ TEST(ScanInserter, TraceSegmentVisitsOnlyCellsTheSegmentCrosses) {
     const double ax = u(rng), ay = u(rng);
     const double bx = k % 4 == 0 ? ax + u(rng) / 100 : u(rng), by = u(rng);  // some short ones
     std::vector<CellIndex> cells;
-    trace_segment(ax, ay, bx, by, [&](CellIndex c) { cells.push_back(c); return true; });
+    trace_segment(ax, ay, bx, by, [&](CellIndex c) {
+      cells.push_back(c);
+      return true;
+    });
     const CellIndex a{static_cast<int>(std::floor(ax)), static_cast<int>(std::floor(ay))};
     const CellIndex b{static_cast<int>(std::floor(bx)), static_cast<int>(std::floor(by))};
     ASSERT_EQ(cells.front(), a) << k;
@@ -130,8 +139,14 @@ TEST(ScanInserter, TraceSegmentVisitsOnlyCellsTheSegmentCrosses) {
 TEST(ScanInserter, AGrazingBeamDoesNotEraseTheWallItEndsOn) {
   const double ax = 0.5, ay = 10.999, bx = 40.5, by = 9.999;
   int wall_cells_exact = 0, wall_cells_centres = 0;
-  trace_segment(ax, ay, bx, by, [&](CellIndex c) { wall_cells_exact += c.y < 10; return true; });
-  trace_cells({0, 10}, {40, 9}, [&](CellIndex c) { wall_cells_centres += c.y < 10; return true; });
+  trace_segment(ax, ay, bx, by, [&](CellIndex c) {
+    wall_cells_exact += c.y < 10;
+    return true;
+  });
+  trace_cells({0, 10}, {40, 9}, [&](CellIndex c) {
+    wall_cells_centres += c.y < 10;
+    return true;
+  });
   EXPECT_EQ(wall_cells_exact, 1);  // the end cell only
   EXPECT_GE(wall_cells_centres, 15);
 

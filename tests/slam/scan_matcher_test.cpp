@@ -45,8 +45,8 @@ TEST_F(ScanMatcherTest, RecoversAnOdometryError) {
 
 TEST_F(ScanMatcherTest, FailsWhenTheScanDoesNotFitTheMap) {
   const ScanMatcher matcher(ScanMatcherOptions{}, model);
-  const PreparedScan wrong = prepare_scan(
-      test::simulate_scan({{0, 0, 1, 0}, {1, 0, 1, 1}}, {0.5, 0.5, 0}, {}), LikelihoodOptions{});
+  const PreparedScan wrong =
+      prepare_scan(test::simulate_scan({{0, 0, 1, 0}, {1, 0, 1, 1}}, {0.5, 0.5, 0}, {}), LikelihoodOptions{});
   EXPECT_FALSE(matcher.match(grid, truth, wrong).ok);
 }
 

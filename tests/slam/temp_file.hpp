@@ -2,11 +2,12 @@
 // A uniquely named temporary file or folder, removed when the test ends.
 #pragma once
 
+#include <unistd.h>
+
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace lookahead::slam::test {
 

@@ -17,9 +17,8 @@ struct Segment {
 
 /// A 10 m x 6 m room with an inner box and a pillar: enough structure to pin every axis.
 inline std::vector<Segment> room_world() {
-  return {{0, 0, 10, 0},     {10, 0, 10, 6},   {10, 6, 0, 6},   {0, 6, 0, 0},
-          {3, 2, 5, 2},      {5, 2, 5, 3.5},   {5, 3.5, 3, 3.5}, {3, 3.5, 3, 2},
-          {7.5, 4, 8, 4},    {8, 4, 8, 4.6},   {8, 4.6, 7.5, 4.6}, {7.5, 4.6, 7.5, 4}};
+  return {{0, 0, 10, 0},    {10, 0, 10, 6}, {10, 6, 0, 6},  {0, 6, 0, 0},   {3, 2, 5, 2},       {5, 2, 5, 3.5},
+          {5, 3.5, 3, 3.5}, {3, 3.5, 3, 2}, {7.5, 4, 8, 4}, {8, 4, 8, 4.6}, {8, 4.6, 7.5, 4.6}, {7.5, 4.6, 7.5, 4}};
 }
 
 inline double cast(const std::vector<Segment>& world, double x, double y, double a, double max) {
@@ -37,8 +36,8 @@ inline double cast(const std::vector<Segment>& world, double x, double y, double
 }
 
 /// A 180-beam, 1-degree scan from `truth` (laser at the robot origin), reporting `odometry`.
-inline LaserScan simulate_scan(const std::vector<Segment>& world, const Pose2& truth,
-                               const Pose2& odometry, double t = 0.0) {
+inline LaserScan simulate_scan(const std::vector<Segment>& world, const Pose2& truth, const Pose2& odometry,
+                               double t = 0.0) {
   LaserScan s;
   s.timestamp = t;
   s.angle_min = -M_PI / 2;

@@ -2,6 +2,8 @@
 // TUM trajectories: round trip, the parser under random and mutated input (it returns poses
 // or throws ParseError naming the line, nothing else), and the ATE against a brute-force
 // alignment on a known trajectory pair.
+#include "lookahead/slam/io/tum_trajectory.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +14,6 @@
 
 #include "lookahead/slam/eval/absolute_error.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
-#include "lookahead/slam/io/tum_trajectory.hpp"
 #include "temp_file.hpp"
 
 namespace lookahead::slam {
@@ -52,8 +53,9 @@ TEST(TumTrajectory, RoundTripsRandomTrajectories) {
 TEST(TumTrajectory, ReadsEvoStyleFilesAndKeepsTheYaw) {
   TempPath path(".tum");
   // A 3D file: yaw 90 deg about z, then a pose rolled 180 deg about x (yaw of R stays 0).
-  path.write("# written by evo\n1.0 1 2 0.5 0 0 0.7071067811865476 0.7071067811865476\r\n"
-             "2.0 3 4 0 1 0 0 0\n\n");
+  path.write(
+      "# written by evo\n1.0 1 2 0.5 0 0 0.7071067811865476 0.7071067811865476\r\n"
+      "2.0 3 4 0 1 0 0 0\n\n");
   const auto poses = read_tum_trajectory(path.str());
   ASSERT_EQ(poses.size(), 2u);
   EXPECT_NEAR(poses[0].pose.theta, M_PI / 2, 1e-12);
@@ -100,9 +102,15 @@ TEST(TumTrajectory, FuzzedInputParsesOrThrowsParseError) {
     for (int e = 0; e < edits; ++e) {
       const std::size_t at = rng() % text.size();
       switch (rng() % 3) {
-        case 0: text[at] = alphabet[pick(rng)]; break;
-        case 1: text.insert(at, 1, alphabet[pick(rng)]); break;
-        default: text.erase(at, 1 + rng() % 8); break;
+        case 0:
+          text[at] = alphabet[pick(rng)];
+          break;
+        case 1:
+          text.insert(at, 1, alphabet[pick(rng)]);
+          break;
+        default:
+          text.erase(at, 1 + rng() % 8);
+          break;
       }
       if (text.empty()) text = "#";
     }
@@ -111,14 +119,15 @@ TEST(TumTrajectory, FuzzedInputParsesOrThrowsParseError) {
     try {
       for (const StampedPose& p : read_tum_trajectory(path.str())) {
         ASSERT_TRUE(std::isfinite(p.t) && std::isfinite(p.pose.x) && std::isfinite(p.pose.y) &&
-                    std::isfinite(p.pose.theta)) << text;
+                    std::isfinite(p.pose.theta))
+            << text;
       }
       ++parsed;
     } catch (const ParseError&) {
       ++rejected;
     }
   }
-  EXPECT_GT(parsed, 0);  // some mutations stay valid (digits for digits) ...
+  EXPECT_GT(parsed, 0);    // some mutations stay valid (digits for digits) ...
   EXPECT_GT(rejected, 0);  // ... and many do not
 }
 

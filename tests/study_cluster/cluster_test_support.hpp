@@ -37,9 +37,8 @@ inline std::string read_file(const fs::path& path) {
 /// `cmd` through /bin/sh, standard output and error together.
 inline Shell shell(const std::string& cmd) {
   static int counter = 0;
-  const fs::path out =
-      fs::temp_directory_path() / ("lookahead-cluster-" + std::to_string(::getpid()) + "-" +
-                                   std::to_string(counter++) + ".txt");
+  const fs::path out = fs::temp_directory_path() /
+                       ("lookahead-cluster-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".txt");
   const int status = std::system((cmd + " > " + out.string() + " 2>&1").c_str());
   Shell r{WIFEXITED(status) ? WEXITSTATUS(status) : 128, read_file(out)};
   fs::remove(out);
@@ -58,13 +57,11 @@ struct TempDir {
 };
 
 /// 2 generated worlds x 2 strategies x `seeds` seeds, true pose, `time_limit` simulated s.
-inline std::string tiny_study(const std::string& name, const fs::path& out, int seeds,
-                              double time_limit) {
+inline std::string tiny_study(const std::string& name, const fs::path& out, int seeds, double time_limit) {
   std::ostringstream s;
   s << "name: " << name << "\nout: " << out.string()
     << "\nworlds:\n  - {name: maze}\n  - {name: corridor}\nstrategies: [nearest, utility]\n"
-    << "seeds: {from: 1, count: " << seeds << "}\npose_source: truth\ntime_limit: " << time_limit
-    << "\n";
+    << "seeds: {from: 1, count: " << seeds << "}\npose_source: truth\ntime_limit: " << time_limit << "\n";
   return s.str();
 }
 
@@ -79,8 +76,7 @@ inline std::vector<std::string> results_without_timing(const fs::path& csv) {
     for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
     if (line.back() == ',') cells.emplace_back();
     if (keep.empty()) {
-      for (const std::string& c : cells)
-        keep.push_back(c != "wall_time_s" && c != "real_time_factor");
+      for (const std::string& c : cells) keep.push_back(c != "wall_time_s" && c != "real_time_factor");
     }
     std::string kept;
     for (std::size_t i = 0; i < cells.size() && i < keep.size(); ++i)
@@ -96,8 +92,7 @@ inline std::set<std::string> finished_runs(const fs::path& out) {
   if (!fs::exists(out / "runs")) return names;
   for (const auto& e : fs::directory_iterator(out / "runs")) {
     const std::string n = e.path().filename().string();
-    if (n.find(".partial") == std::string::npos && fs::exists(e.path() / "run.json"))
-      names.insert(n);
+    if (n.find(".partial") == std::string::npos && fs::exists(e.path() / "run.json")) names.insert(n);
   }
   return names;
 }
@@ -111,8 +106,8 @@ class SlurmCluster : public ::testing::Test {
       GTEST_SKIP() << "slurm-wlm and munge are not installed (scripts/install_deps.sh)";
     // A fixed folder: the ctest cleanup fixture stops this cluster even when a test died.
     dir_ = LOOKAHEAD_TEST_SLURM_DIR;
-    script_ = "LOOKAHEAD_SLURM_DIR=" + dir_.string() + " " + std::string(LOOKAHEAD_SOURCE_DIR) +
-              "/scripts/slurm_local.sh";
+    script_ =
+        "LOOKAHEAD_SLURM_DIR=" + dir_.string() + " " + std::string(LOOKAHEAD_SOURCE_DIR) + "/scripts/slurm_local.sh";
     const Shell r = shell(script_ + " start");
     started_ = true;
     ASSERT_EQ(r.code, 0) << r.output;

@@ -28,8 +28,7 @@ TEST_F(StudyCli, ShardSpecsMustBeIOfN) {
   const Shell r = study_cmd("run " + study().string() + " --shard 4/4");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.output.find("I must be < N"), std::string::npos) << r.output;
-  const Shell env = shell("SLURM_ARRAY_TASK_ID=5 SLURM_ARRAY_TASK_COUNT=5 " + kBin + " study run " +
-                          study().string());
+  const Shell env = shell("SLURM_ARRAY_TASK_ID=5 SLURM_ARRAY_TASK_COUNT=5 " + kBin + " study run " + study().string());
   EXPECT_EQ(env.code, 2);
   EXPECT_NE(env.output.find("SLURM_ARRAY_TASK_ID"), std::string::npos) << env.output;
   EXPECT_FALSE(fs::exists(tmp.path / "out/runs"));
@@ -53,16 +52,14 @@ TEST_F(StudyCli, AStudyChangedAfterPlanningRunsNothing) {
   EXPECT_EQ(finished_runs(tmp.path / "out").size(), 2u);  // missions 1 and 3 of 0..3
   r = study_cmd("merge " + study().string());
   EXPECT_EQ(r.code, 0) << r.output;
-  EXPECT_NE(r.output.find("2 of 4 planned missions are not finished"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("2 of 4 planned missions are not finished"), std::string::npos) << r.output;
   EXPECT_EQ(read_file(tmp.path / "out/missing.txt"), "maze__nearest__1\ncorridor__nearest__1\n");
 }
 
 TEST_F(StudyCli, AMissingWorldIsNamed) {
-  std::ofstream(study())
-      << "name: s\nout: " << (tmp.path / "out").string()
-      << "\nworlds:\n  - {name: maze}\n  - {name: plans/gone.png, resolution: 0.1}\n"
-      << "strategies: [nearest]\nseeds: [1]\n";
+  std::ofstream(study()) << "name: s\nout: " << (tmp.path / "out").string()
+                         << "\nworlds:\n  - {name: maze}\n  - {name: plans/gone.png, resolution: 0.1}\n"
+                         << "strategies: [nearest]\nseeds: [1]\n";
   for (const char* verb : {"plan", "run", "slurm"}) {
     const Shell r = study_cmd(std::string(verb) + " " + study().string());
     EXPECT_EQ(r.code, 2) << verb << r.output;
@@ -73,8 +70,7 @@ TEST_F(StudyCli, AMissingWorldIsNamed) {
 
 TEST_F(StudyCli, SubmittingWithoutSbatchSaysSo) {
   write_study(3);
-  const Shell r = shell("cd " + tmp.path.string() + " && PATH=/nonexistent " + kBin +
-                        " study slurm s.yaml --submit");
+  const Shell r = shell("cd " + tmp.path.string() + " && PATH=/nonexistent " + kBin + " study slurm s.yaml --submit");
   EXPECT_EQ(r.code, 2) << r.output;
   EXPECT_NE(r.output.find("sbatch is not on PATH"), std::string::npos) << r.output;
   // The scripts are written all the same, with the shard count and the throttle.
@@ -82,8 +78,7 @@ TEST_F(StudyCli, SubmittingWithoutSbatchSaysSo) {
   EXPECT_NE(array.find("#SBATCH --array=0-3\n"), std::string::npos) << array;
   EXPECT_NE(array.find("--shard \"${SLURM_ARRAY_TASK_ID}/4\""), std::string::npos) << array;
   EXPECT_TRUE(fs::exists(tmp.path / "out/slurm/merge.sbatch"));
-  EXPECT_EQ(
-      shell("cd " + tmp.path.string() + " && " + kBin + " study slurm s.yaml --shards 5").code, 2);
+  EXPECT_EQ(shell("cd " + tmp.path.string() + " && " + kBin + " study slurm s.yaml --shards 5").code, 2);
 }
 
 }  // namespace

@@ -28,8 +28,7 @@ TEST(StudyInterrupt, WritesTheResultsOfTheFinishedMissions) {
   while (finished_runs(out).size() < 2 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ASSERT_EQ(::kill(pid, SIGTERM), 0);
-  for (int i = 0; i < 200 && ::kill(pid, 0) == 0; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  for (int i = 0; i < 200 && ::kill(pid, 0) == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   ASSERT_NE(::kill(pid, 0), 0) << "still running";
   const std::string log = read_file(tmp.path / "log.txt");
   EXPECT_NE(log.find("writing the results of the finished runs"), std::string::npos) << log;
@@ -40,15 +39,13 @@ TEST(StudyInterrupt, WritesTheResultsOfTheFinishedMissions) {
   std::size_t missing = 0;
   for (const char c : read_file(out / "missing.txt")) missing += c == '\n' ? 1 : 0;
   EXPECT_EQ(missing, 12 - finished);
-  EXPECT_NE(read_file(out / "summary.md")
-                .find(std::to_string(12 - finished) + " of 12 planned missions are not finished"),
-            std::string::npos);
+  EXPECT_NE(
+      read_file(out / "summary.md").find(std::to_string(12 - finished) + " of 12 planned missions are not finished"),
+      std::string::npos);
 
   const Shell again = shell(kBin + " study " + (tmp.path / "s.yaml").string() + " --jobs 2");
   ASSERT_EQ(again.code, 0) << again.output;
-  EXPECT_NE(again.output.find(std::to_string(12 - finished) + " run(s) executed"),
-            std::string::npos)
-      << again.output;
+  EXPECT_NE(again.output.find(std::to_string(12 - finished) + " run(s) executed"), std::string::npos) << again.output;
   EXPECT_EQ(data_rows(out / "results.csv"), 12u);
   // The staging folder of the mission the signal abandoned is gone.
   EXPECT_EQ(std::distance(fs::directory_iterator(out / "runs"), fs::directory_iterator()), 12);

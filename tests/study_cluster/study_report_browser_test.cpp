@@ -67,8 +67,7 @@ std::size_t count(const std::string& text, const std::string& what) {
 }
 
 TEST(StudyReport, OpensInHeadlessChromiumWithEveryTableAndMap) {
-  if (shell("command -v chromium").code != 0)
-    GTEST_SKIP() << "chromium is not installed (scripts/install_deps.sh)";
+  if (shell("command -v chromium").code != 0) GTEST_SKIP() << "chromium is not installed (scripts/install_deps.sh)";
   const TempDir tmp("lookahead-study-report");
   std::ofstream(tmp.path / "s.yaml") << tiny_study("report", tmp.path / "out", 2, 5);
   Shell r = shell(kBin + " study " + (tmp.path / "s.yaml").string() + " --jobs 2");
@@ -78,8 +77,7 @@ TEST(StudyReport, OpensInHeadlessChromiumWithEveryTableAndMap) {
   r = chromium(tmp.path / "profile", page, "--dump-dom");
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_TRUE(console_errors(r.output).empty()) << r.output;
-  EXPECT_NE(r.output.find(" of 8 missions reached the coverage goal"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find(" of 8 missions reached the coverage goal"), std::string::npos) << r.output;
   EXPECT_EQ(count(r.output, "<table class=\"strategies\">"), 2u);  // maze, corridor
   EXPECT_EQ(count(r.output, "<table class=\"paired\">"), 2u);
   EXPECT_EQ(count(r.output, "class=\"run-map\""), 8u);

@@ -14,8 +14,7 @@ const std::string kBin = LOOKAHEAD_BINARY;
 // "array job 12, merge job 13" from `lookahead study slurm --submit`.
 std::pair<std::string, std::string> job_ids(const std::string& output) {
   std::smatch m;
-  if (!std::regex_search(output, m, std::regex("array job ([0-9]+), merge job ([0-9]+)")))
-    return {};
+  if (!std::regex_search(output, m, std::regex("array job ([0-9]+), merge job ([0-9]+)"))) return {};
   return {m[1], m[2]};
 }
 
@@ -28,8 +27,7 @@ TEST_F(StudyArray, MergedArrayEqualsTheLocalStudy) {
   Shell r = shell(kBin + " study " + (tmp.path / "local.yaml").string() + " --jobs 2");
   ASSERT_EQ(r.code, 0) << r.output;
 
-  r = shell("cd " + tmp.path.string() + " && " + kBin +
-            " study slurm array.yaml --shards 4 --submit");
+  r = shell("cd " + tmp.path.string() + " && " + kBin + " study slurm array.yaml --shards 4 --submit");
   ASSERT_EQ(r.code, 0) << r.output;
   const auto [array, merge] = job_ids(r.output);
   ASSERT_FALSE(merge.empty()) << r.output;
@@ -44,11 +42,9 @@ TEST_F(StudyArray, MergedArrayEqualsTheLocalStudy) {
   EXPECT_EQ(read_file(tmp.path / "array/plan.csv"), read_file(tmp.path / "local/plan.csv"));
   EXPECT_EQ(read_file(tmp.path / "array/overall.csv"), read_file(tmp.path / "local/overall.csv"));
   for (int task = 0; task < 4; ++task) {
-    const fs::path log =
-        tmp.path / ("array/slurm/logs/array_" + array + "_" + std::to_string(task) + ".log");
+    const fs::path log = tmp.path / ("array/slurm/logs/array_" + array + "_" + std::to_string(task) + ".log");
     EXPECT_TRUE(fs::exists(log)) << log;
-    EXPECT_TRUE(
-        fs::exists(tmp.path / ("array/logs/progress_" + std::to_string(task) + "_of_4.log")));
+    EXPECT_TRUE(fs::exists(tmp.path / ("array/logs/progress_" + std::to_string(task) + "_of_4.log")));
   }
   EXPECT_TRUE(fs::exists(tmp.path / "array/report.html"));
   EXPECT_EQ(read_file(tmp.path / "array/missing.txt"), "");
@@ -57,8 +53,7 @@ TEST_F(StudyArray, MergedArrayEqualsTheLocalStudy) {
 TEST_F(StudyArray, CancelledArrayResubmittedRunsOnlyWhatIsMissing) {
   const TempDir tmp("lookahead-study-cancel");
   std::ofstream(tmp.path / "study.yaml") << tiny_study("cancel", tmp.path / "out", 3, 40);
-  const std::string submit =
-      "cd " + tmp.path.string() + " && " + kBin + " study slurm study.yaml --shards 3 --submit";
+  const std::string submit = "cd " + tmp.path.string() + " && " + kBin + " study slurm study.yaml --shards 3 --submit";
   Shell r = shell(submit);
   ASSERT_EQ(r.code, 0) << r.output;
   const auto [array, merge] = job_ids(r.output);
@@ -76,8 +71,7 @@ TEST_F(StudyArray, CancelledArrayResubmittedRunsOnlyWhatIsMissing) {
   ASSERT_GE(before.size(), 3u);
   ASSERT_LT(before.size(), 12u) << "the array finished before it was cancelled";
   std::map<std::string, fs::file_time_type> stamps;
-  for (const std::string& run : before)
-    stamps[run] = fs::last_write_time(out / "runs" / run / "run.json");
+  for (const std::string& run : before) stamps[run] = fs::last_write_time(out / "runs" / run / "run.json");
 
   r = shell(submit);
   ASSERT_EQ(r.code, 0) << r.output;
@@ -93,8 +87,7 @@ TEST_F(StudyArray, CancelledArrayResubmittedRunsOnlyWhatIsMissing) {
     EXPECT_EQ(fs::last_write_time(out / "runs" / run / "run.json"), stamp) << run;
   std::size_t executed = 0;  // the resubmitted tasks say how many they ran
   for (int task = 0; task < 3; ++task) {
-    const std::string log =
-        read_file(out / ("slurm/logs/array_" + array2 + "_" + std::to_string(task) + ".log"));
+    const std::string log = read_file(out / ("slurm/logs/array_" + array2 + "_" + std::to_string(task) + ".log"));
     std::smatch m;
     ASSERT_TRUE(std::regex_search(log, m, std::regex("([0-9]+) run\\(s\\) executed"))) << log;
     executed += std::stoul(m[1]);

@@ -26,7 +26,6 @@ void visit_sections(LogPredictionOptions& o, V&& v) {
     "the replay waits for a late prediction (false: takes it at a later update, as a live robot)");
 }
 
-
 void validate_targets(const SlamLookaheadOptions& t) {
   if (t.period_updates < 1) throw std::invalid_argument("log_targets.period_updates >= 1");
   if (t.latency_updates < 0) throw std::invalid_argument("log_targets.latency_updates >= 0");

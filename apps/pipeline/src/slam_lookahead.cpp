@@ -51,20 +51,17 @@ std::optional<std::pair<double, double>> frontier_ahead(const slam::OccupancyGri
   return all.front();
 }
 
-SlamLookahead::SlamLookahead(const predictor::PredictorOptions& predictor,
-                             const SlamLookaheadOptions& options)
+SlamLookahead::SlamLookahead(const predictor::PredictorOptions& predictor, const SlamLookaheadOptions& options)
     : options_(options),
-      worker_(predictor, options.wait_for_predictions
-                             ? predictor::PredictionWorker::Priority::kNormal
-                             : predictor::PredictionWorker::Priority::kBackground) {}
+      worker_(predictor, options.wait_for_predictions ? predictor::PredictionWorker::Priority::kNormal
+                                                      : predictor::PredictionWorker::Priority::kBackground) {}
 
 void SlamLookahead::after_update(slam::Rbpf& filter) {
   ++updates_;
   if (due_ >= 0 && updates_ >= due_) {
     // Live (no waiting), the filter never stalls (measured: waiting for 55 ms predictions
     // cost fr101 40 % of its update rate): a prediction not finished yet is taken later.
-    std::optional<predictor::Prediction> p =
-        options_.wait_for_predictions ? worker_.wait() : worker_.poll();
+    std::optional<predictor::Prediction> p = options_.wait_for_predictions ? worker_.wait() : worker_.poll();
     if (!p) {
       if (worker_.busy()) return;
       p = worker_.poll();  // it finished between the two calls

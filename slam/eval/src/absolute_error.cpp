@@ -11,14 +11,14 @@ struct Pair {
   double rx, ry, ex, ey;
 };
 
-std::vector<Pair> match_by_stamp(const std::vector<StampedPose>& reference,
-                                 std::vector<StampedPose> estimate, double tolerance) {
+std::vector<Pair> match_by_stamp(const std::vector<StampedPose>& reference, std::vector<StampedPose> estimate,
+                                 double tolerance) {
   std::stable_sort(estimate.begin(), estimate.end(),
                    [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
   std::vector<Pair> pairs;
   for (const StampedPose& r : reference) {
-    auto it = std::lower_bound(estimate.begin(), estimate.end(), r.t,
-                               [](const StampedPose& p, double v) { return p.t < v; });
+    auto it =
+        std::lower_bound(estimate.begin(), estimate.end(), r.t, [](const StampedPose& p, double v) { return p.t < v; });
     const StampedPose* best = nullptr;
     if (it != estimate.end()) best = &*it;
     if (it != estimate.begin() && (!best || r.t - (it - 1)->t < best->t - r.t)) best = &*(it - 1);
@@ -32,8 +32,7 @@ std::vector<Pair> match_by_stamp(const std::vector<StampedPose>& reference,
 }  // namespace
 
 AbsoluteError absolute_trajectory_error(const std::vector<StampedPose>& reference,
-                                        const std::vector<StampedPose>& estimate,
-                                        double tolerance) {
+                                        const std::vector<StampedPose>& estimate, double tolerance) {
   AbsoluteError out;
   const std::vector<Pair> pairs = match_by_stamp(reference, estimate, tolerance);
   out.matched = pairs.size();
@@ -41,7 +40,10 @@ AbsoluteError absolute_trajectory_error(const std::vector<StampedPose>& referenc
   const double n = static_cast<double>(pairs.size());
   double rcx = 0, rcy = 0, ecx = 0, ecy = 0;
   for (const Pair& p : pairs) {
-    rcx += p.rx / n; rcy += p.ry / n; ecx += p.ex / n; ecy += p.ey / n;
+    rcx += p.rx / n;
+    rcy += p.ry / n;
+    ecx += p.ex / n;
+    ecy += p.ey / n;
   }
   // The rotation maximising sum r_i . R e_i (centred): atan2 of the summed cross and dot.
   double dot = 0, cross = 0;

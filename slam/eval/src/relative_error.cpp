@@ -11,8 +11,7 @@ namespace lookahead::slam {
 namespace {
 
 const StampedPose* nearest(const std::vector<StampedPose>& sorted, double t, double tolerance) {
-  auto it = std::lower_bound(sorted.begin(), sorted.end(), t,
-                             [](const StampedPose& p, double v) { return p.t < v; });
+  auto it = std::lower_bound(sorted.begin(), sorted.end(), t, [](const StampedPose& p, double v) { return p.t < v; });
   const StampedPose* best = nullptr;
   if (it != sorted.end()) best = &*it;
   if (it != sorted.begin() && (!best || t - (it - 1)->t < best->t - t)) best = &*(it - 1);
@@ -39,17 +38,17 @@ std::vector<Relation> read_relations(const std::string& path) {
     if (first == std::string::npos || line[first] == '#') continue;
     const carmen::Fields f(path, reader.line_number(), line);
     if (f.size() != 8) f.fail("fields", std::to_string(f.size()), "expected 't1 t2 x y z roll pitch yaw'");
-    out.push_back({f.number(0, "t1"), f.number(1, "t2"),
+    out.push_back({f.number(0, "t1"),
+                   f.number(1, "t2"),
                    {f.number(2, "x"), f.number(3, "y"), normalize_angle(f.number(7, "yaw"))}});
   }
   return out;
 }
 
-RelativeError relative_error(const std::vector<Relation>& relations,
-                             const std::vector<StampedPose>& trajectory, double tolerance) {
+RelativeError relative_error(const std::vector<Relation>& relations, const std::vector<StampedPose>& trajectory,
+                             double tolerance) {
   std::vector<StampedPose> sorted = trajectory;
-  std::stable_sort(sorted.begin(), sorted.end(),
-                   [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
+  std::stable_sort(sorted.begin(), sorted.end(), [](const StampedPose& a, const StampedPose& b) { return a.t < b.t; });
   std::vector<double> trans, rot;
   RelativeError e;
   for (const Relation& r : relations) {
@@ -70,8 +69,7 @@ RelativeError relative_error(const std::vector<Relation>& relations,
   return e;
 }
 
-std::vector<Relation> relations_from_reference(const std::vector<StampedPose>& reference,
-                                               std::size_t stride) {
+std::vector<Relation> relations_from_reference(const std::vector<StampedPose>& reference, std::size_t stride) {
   std::vector<Relation> out;
   stride = std::max<std::size_t>(1, stride);
   for (std::size_t i = 0; i + stride < reference.size(); ++i) {

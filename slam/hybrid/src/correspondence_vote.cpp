@@ -13,8 +13,10 @@ constexpr long kNew = -2;
 
 long option_of(const Particle& p, const Decision& d) {
   switch (d.kind) {
-    case Decision::Kind::kSpurious: return kSpurious;
-    case Decision::Kind::kCreated: return kNew;
+    case Decision::Kind::kSpurious:
+      return kSpurious;
+    case Decision::Kind::kCreated:
+      return kNew;
     case Decision::Kind::kAssociated: {
       const long id = p.landmarks[static_cast<std::size_t>(d.landmark)].id;
       return id >= 0 ? id : kNew;  // an unidentified landmark votes like a new one
@@ -23,8 +25,8 @@ long option_of(const Particle& p, const Decision& d) {
   return kSpurious;
 }
 
-long winner_of(const std::vector<Particle>& particles,
-               const std::vector<std::vector<Decision>>& decisions, std::size_t j) {
+long winner_of(const std::vector<Particle>& particles, const std::vector<std::vector<Decision>>& decisions,
+               std::size_t j) {
   std::map<long, double> tally;  // ordered: ties go to the smallest option, deterministically
   for (std::size_t p = 0; p < particles.size(); ++p) {
     tally[option_of(particles[p], decisions[p][j])] += particles[p].weight;
@@ -40,8 +42,7 @@ long winner_of(const std::vector<Particle>& particles,
 }  // namespace
 
 std::vector<long> vote_correspondences(std::vector<Particle>& particles,
-                                       const std::vector<std::vector<Decision>>& decisions,
-                                       long& next_id) {
+                                       const std::vector<std::vector<Decision>>& decisions, long& next_id) {
   const std::size_t n_obs = decisions.empty() ? 0 : decisions.front().size();
   std::vector<long> winners(n_obs, -1);
   for (std::size_t j = 0; j < n_obs; ++j) {

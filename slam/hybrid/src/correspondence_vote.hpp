@@ -14,7 +14,6 @@ namespace lookahead::slam::hybrid {
 /// decisions[p][j]: what particle p did with observation j. New identities are taken from
 /// next_id (incremented). Returns the winning gamma per observation (-1: spurious won).
 std::vector<long> vote_correspondences(std::vector<Particle>& particles,
-                                       const std::vector<std::vector<Decision>>& decisions,
-                                       long& next_id);
+                                       const std::vector<std::vector<Decision>>& decisions, long& next_id);
 
 }  // namespace lookahead::slam::hybrid

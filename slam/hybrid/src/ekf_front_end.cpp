@@ -13,9 +13,7 @@ Eigen::Index slot(std::size_t k) { return 3 + 2 * static_cast<Eigen::Index>(k); 
 
 }  // namespace
 
-EkfFrontEnd::EkfFrontEnd(const HybridOptions& options) : options_(options), existence_(options.existence) {
-  restart();
-}
+EkfFrontEnd::EkfFrontEnd(const HybridOptions& options) : options_(options), existence_(options.existence) { restart(); }
 
 void EkfFrontEnd::restart() {
   x_ = Eigen::VectorXd::Zero(3);
@@ -50,8 +48,8 @@ std::vector<int> EkfFrontEnd::associate(const std::vector<RangeBearing>& z) cons
   for (std::size_t i = 0; i < z.size(); ++i) {
     for (std::size_t k = 0; k < ids_.size(); ++k) {
       const PredictedObservation h = predict_observation(v, x_.segment<2>(slot(k)));
-      PairingCandidate c{static_cast<int>(i), static_cast<int>(k), innovation(z[i], h.z),
-                         Eigen::MatrixXd::Zero(2, n), z[i].noise};
+      PairingCandidate c{static_cast<int>(i), static_cast<int>(k), innovation(z[i], h.z), Eigen::MatrixXd::Zero(2, n),
+                         z[i].noise};
       c.jacobian.leftCols<3>() = h.d_pose;
       c.jacobian.middleCols<2>(slot(k)) = h.d_point;
       const Eigen::Matrix2d s = c.jacobian * p_ * c.jacobian.transpose() + c.noise;
@@ -104,8 +102,8 @@ void EkfFrontEnd::add_feature(const RangeBearing& z) {
   const Eigen::MatrixXd cross = ip.d_pose * p_.topLeftCorner(3, n);
   p_.bottomLeftCorner(2, n) = cross;
   p_.topRightCorner(n, 2) = cross.transpose();
-  p_.bottomRightCorner<2, 2>() = ip.d_pose * p_.topLeftCorner<3, 3>() * ip.d_pose.transpose() +
-                                 ip.d_z * z.noise * ip.d_z.transpose();
+  p_.bottomRightCorner<2, 2>() =
+      ip.d_pose * p_.topLeftCorner<3, 3>() * ip.d_pose.transpose() + ip.d_z * z.noise * ip.d_z.transpose();
   ids_.push_back(next_id_++);
   existence_of_.push_back(existence_.created());
 }

@@ -30,8 +30,7 @@ struct Candidate {
   Matrix2 s;
 };
 
-Candidate evaluate(const Proposal& q, const Landmark& l, int index, const RangeBearing& z,
-                   double gate_chi2) {
+Candidate evaluate(const Proposal& q, const Landmark& l, int index, const RangeBearing& z, double gate_chi2) {
   const PredictedObservation h = predict_observation(q.mean, l.mean);
   Candidate c;
   c.landmark = index;
@@ -103,8 +102,7 @@ void FastSlam::observe(const std::vector<RangeBearing>& z) {
   resample_if_degenerate();
 }
 
-double FastSlam::update_particle(Particle& p, const std::vector<RangeBearing>& z,
-                                 std::vector<Decision>& decisions) {
+double FastSlam::update_particle(Particle& p, const std::vector<RangeBearing>& z, std::vector<Decision>& decisions) {
   const MotionStep step = has_pending_ ? pending_ : MotionStep{};
   Proposal q{p.pose.compose(step.delta), control_covariance(p.pose, step)};
   const auto& fo = options_.fastslam;
@@ -205,9 +203,7 @@ void FastSlam::resample_if_degenerate() {
 
 PoseGaussian FastSlam::vehicle() const { return moment_match_pose(particles_); }
 
-GaussianMap FastSlam::to_gaussian(double min_existence) {
-  return moment_match(particles_, min_existence, rng_);
-}
+GaussianMap FastSlam::to_gaussian(double min_existence) { return moment_match(particles_, min_existence, rng_); }
 
 bool FastSlam::unsettled() const {
   const double d = options_.fusion.disputed_fraction;

@@ -151,8 +151,8 @@ std::vector<int> GlobalMap::associate(std::size_t first_new, std::size_t count, 
       candidates.push_back(std::move(c));
     }
   }
-  const JcbbResult r = jcbb(static_cast<int>(count), candidates, covariance_, options_.jcbb_confidence,
-                            options_.jcbb_max_nodes);
+  const JcbbResult r =
+      jcbb(static_cast<int>(count), candidates, covariance_, options_.jcbb_confidence, options_.jcbb_max_nodes);
   report.search_truncated = r.search_truncated;
   return r.target_of;
 }

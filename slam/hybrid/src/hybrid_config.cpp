@@ -81,7 +81,8 @@ void visit_sections(HybridConfig& c, V&& v) {
   v("min_length", l.min_length, "segment length [m]");
   v("corner_min_angle", l.corner_min_angle, "two segments meet at least this sharply for a corner [rad]");
   v("corner_max_gap", l.corner_max_gap, "the corner lies this close to the shared beam [m]");
-  v("occlusion_margin", l.occlusion_margin, "a line end is free when the next beam is this much farther or missing [m]");
+  v("occlusion_margin", l.occlusion_margin,
+    "a line end is free when the next beam is this much farther or missing [m]");
   v("continuation_distance", l.continuation_distance, "... unless that beam lies this close to the segment's line [m]");
   v("min_incidence", l.min_incidence, "a line end's beam meets its line at least this steeply [rad]");
   v("line_ends", l.line_ends, "report free line ends (else corners only)");
@@ -103,8 +104,10 @@ HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& sou
     const FeatureExistence check(c.filter.existence);
     if (c.filter.fastslam.particles < 1) throw std::invalid_argument("fastslam.particles must be >= 1");
     if (!(c.filter.fusion.period > 0.0)) throw std::invalid_argument("fusion.period must be > 0");
-    if (c.filter.fusion.relinearise_iterations < 1) throw std::invalid_argument("fusion.relinearise_iterations must be >= 1");
-    if (c.study.alphas.size() != c.study.betas.size()) throw std::invalid_argument("study.alphas and study.betas differ in length");
+    if (c.filter.fusion.relinearise_iterations < 1)
+      throw std::invalid_argument("fusion.relinearise_iterations must be >= 1");
+    if (c.study.alphas.size() != c.study.betas.size())
+      throw std::invalid_argument("study.alphas and study.betas differ in length");
     if (!(c.simulation.dt > 0.0)) throw std::invalid_argument("simulation.dt must be > 0");
     validate(c.scan_landmarks);
   } catch (const std::invalid_argument& e) {

@@ -11,10 +11,14 @@ namespace {
 
 class Search {
  public:
-  Search(int items, const std::vector<PairingCandidate>& c, const Eigen::MatrixXd& p,
-         double confidence, int max_nodes)
-      : items_(items), candidates_(c), p_(p), confidence_(confidence), max_nodes_(max_nodes),
-        by_item_(static_cast<std::size_t>(items)), gates_(2 * static_cast<std::size_t>(items) + 1) {
+  Search(int items, const std::vector<PairingCandidate>& c, const Eigen::MatrixXd& p, double confidence, int max_nodes)
+      : items_(items),
+        candidates_(c),
+        p_(p),
+        confidence_(confidence),
+        max_nodes_(max_nodes),
+        by_item_(static_cast<std::size_t>(items)),
+        gates_(2 * static_cast<std::size_t>(items) + 1) {
     // The joint gate for every dimension (2 per pair), once: a quantile is an iterative inversion.
     for (std::size_t m = 1; m < gates_.size(); ++m) gates_[m] = chi2_quantile(static_cast<int>(m), confidence);
     for (std::size_t k = 0; k < c.size(); ++k) by_item_[static_cast<std::size_t>(c[k].item)].push_back(k);
@@ -116,8 +120,8 @@ double chi2_quantile(int dof, double confidence) {
   return boost::math::quantile(boost::math::chi_squared(dof), confidence);
 }
 
-JcbbResult jcbb(int items, const std::vector<PairingCandidate>& candidates,
-                const Eigen::MatrixXd& covariance, double confidence, int max_nodes) {
+JcbbResult jcbb(int items, const std::vector<PairingCandidate>& candidates, const Eigen::MatrixXd& covariance,
+                double confidence, int max_nodes) {
   return Search(items, candidates, covariance, confidence, max_nodes).run();
 }
 

@@ -26,14 +26,14 @@ struct PairingCandidate {
 struct JcbbResult {
   std::vector<int> target_of;  ///< per item: the paired target or -1
   int pairings = 0;
-  double nis = 0.0;            ///< joint normalised innovation squared of the pairing
+  double nis = 0.0;               ///< joint normalised innovation squared of the pairing
   bool search_truncated = false;  ///< the node cap stopped the search early
-  int nodes = 0;               ///< search nodes expanded (counted against the cap)
+  int nodes = 0;                  ///< search nodes expanded (counted against the cap)
 };
 
 /// `candidates` holds only individually compatible pairs (the caller's gate).
-JcbbResult jcbb(int items, const std::vector<PairingCandidate>& candidates,
-                const Eigen::MatrixXd& covariance, double confidence, int max_nodes);
+JcbbResult jcbb(int items, const std::vector<PairingCandidate>& candidates, const Eigen::MatrixXd& covariance,
+                double confidence, int max_nodes);
 
 /// The `confidence` quantile of the chi-square distribution with `dof` degrees of freedom.
 double chi2_quantile(int dof, double confidence);

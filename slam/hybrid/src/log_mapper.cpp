@@ -18,7 +18,8 @@ LogMappingResult map_log(const LaserLog& log, const LogMappingOptions& options, 
   LogMappingResult result;
   if (log.scans.empty()) return result;
   const Pose2 start = log.scans.front().odometry;
-  SubmapFilter filter(std::make_unique<FastSlam>(options.filter, options.filter.fastslam.seed), options.filter, start, true);
+  SubmapFilter filter(std::make_unique<FastSlam>(options.filter, options.filter.fastslam.seed), options.filter, start,
+                      true);
   const OdometryMotionModel motion(options.motion);
   for (std::size_t i = 0; i < log.scans.size(); ++i) {
     const LaserScan& scan = log.scans[i];

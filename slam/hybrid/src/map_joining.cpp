@@ -93,7 +93,8 @@ void MapJoining::residual_and_jacobian(const Factor& f, Eigen::VectorXd& r, Eige
   if (free_origin) j(2, 2) = -1.0;
   j(2, origin_cols + 2) = 1.0;
   for (std::size_t k = 0; k < f.features.size(); ++k) {
-    const Eigen::Index row = 3 + 2 * static_cast<Eigen::Index>(k), col = origin_cols + 3 + 2 * static_cast<Eigen::Index>(k);
+    const Eigen::Index row = 3 + 2 * static_cast<Eigen::Index>(k),
+                       col = origin_cols + 3 + 2 * static_cast<Eigen::Index>(k);
     point(row, features_[static_cast<std::size_t>(f.features[k])], col);
     cols.push_back(feature_column(f.features[k]));
     cols.push_back(feature_column(f.features[k]) + 1);
@@ -134,7 +135,8 @@ int MapJoining::solve(int iterations) {
       const Eigen::Vector3d d = step.segment<3>(pose_column(static_cast<int>(k)));
       poses_[k] = {poses_[k].x + d.x(), poses_[k].y + d.y(), normalize_angle(poses_[k].theta + d.z())};
     }
-    for (std::size_t m = 0; m < features_.size(); ++m) features_[m] += step.segment<2>(feature_column(static_cast<int>(m)));
+    for (std::size_t m = 0; m < features_.size(); ++m)
+      features_[m] += step.segment<2>(feature_column(static_cast<int>(m)));
     if (step.cwiseAbs().maxCoeff() < kConverged) return it + 1;
   }
   return iterations;
@@ -145,7 +147,8 @@ void MapJoining::marginal(Eigen::VectorXd& mean, Eigen::MatrixXd& covariance) co
   const Pose2& v = poses_.back();
   mean.resize(m);
   mean.head<3>() << v.x, v.y, v.theta;
-  for (std::size_t k = 0; k < features_.size(); ++k) mean.segment<2>(3 + 2 * static_cast<Eigen::Index>(k)) = features_[k];
+  for (std::size_t k = 0; k < features_.size(); ++k)
+    mean.segment<2>(3 + 2 * static_cast<Eigen::Index>(k)) = features_[k];
   if (poses_.size() == 1) {  // nothing fused yet: the start, exactly
     covariance = Eigen::MatrixXd::Zero(m, m);
     return;

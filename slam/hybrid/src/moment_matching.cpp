@@ -25,8 +25,8 @@ Eigen::Vector3d pose_vector(const Pose2& pose, double reference_heading) {
 // Per particle, the landmark index standing for each selected common feature (-1: none).
 // A particle holding several landmarks with one gamma contributes one of them, drawn at
 // random (HybridSLAM sec. 3.2, first corner case).
-std::vector<std::vector<int>> representatives(const std::vector<Particle>& particles,
-                                              const std::vector<long>& ids, std::mt19937_64& rng) {
+std::vector<std::vector<int>> representatives(const std::vector<Particle>& particles, const std::vector<long>& ids,
+                                              std::mt19937_64& rng) {
   std::map<long, std::size_t> column;
   for (std::size_t k = 0; k < ids.size(); ++k) column[ids[k]] = k;
   std::vector<std::vector<int>> rep(particles.size(), std::vector<int>(ids.size(), -1));
@@ -86,8 +86,7 @@ PoseGaussian moment_match_pose(const std::vector<Particle>& particles) {
   return {{mean.x(), mean.y(), normalize_angle(mean.z())}, cov};
 }
 
-GaussianMap moment_match(const std::vector<Particle>& particles, double min_existence,
-                         std::mt19937_64& rng) {
+GaussianMap moment_match(const std::vector<Particle>& particles, double min_existence, std::mt19937_64& rng) {
   GaussianMap g;
   for (const auto& f : common_features(particles)) {
     if (f.existence > min_existence) {

@@ -25,8 +25,7 @@ std::vector<CommonFeature> common_features(const std::vector<Particle>& particle
 /// `min_existence`. Corner cases of HybridSLAM sec. 3.2: a particle holding several landmarks with one
 /// gamma contributes one of them chosen at random (`rng`); a particle holding none is
 /// ignored for that feature. Weights need not be normalised.
-GaussianMap moment_match(const std::vector<Particle>& particles, double min_existence,
-                         std::mt19937_64& rng);
+GaussianMap moment_match(const std::vector<Particle>& particles, double min_existence, std::mt19937_64& rng);
 
 /// The vehicle pose alone (what the failure test and the plots read every step).
 PoseGaussian moment_match_pose(const std::vector<Particle>& particles);

@@ -9,8 +9,8 @@ namespace lookahead::slam::hybrid {
 Pose2 sample_motion(const Pose2& pose, const MotionStep& step, std::mt19937_64& rng) {
   std::normal_distribution<double> n(0.0, 1.0);
   const Pose2& u = step.delta;
-  return pose.compose({u.x + step.sigma.x() * n(rng), u.y + step.sigma.y() * n(rng),
-                       u.theta + step.sigma.z() * n(rng)});
+  return pose.compose(
+      {u.x + step.sigma.x() * n(rng), u.y + step.sigma.y() * n(rng), u.theta + step.sigma.z() * n(rng)});
 }
 
 Pose2 sample_gaussian_pose(const Pose2& mean, const Matrix3& covariance, std::mt19937_64& rng) {

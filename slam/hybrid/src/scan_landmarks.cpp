@@ -16,9 +16,9 @@ struct Beam {
 };
 
 struct Segment {
-  std::size_t first, last;  // into the run
+  std::size_t first, last;            // into the run
   Eigen::Vector2d centre, direction;  // total-least-squares line
-  Eigen::Vector2d a, b;     // end points projected on the line
+  Eigen::Vector2d a, b;               // end points projected on the line
 };
 
 double distance_to_chord(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -75,7 +75,8 @@ Segment fit(const std::vector<Beam>& run, std::size_t first, std::size_t last) {
   const double n = static_cast<double>(last - first + 1);
   for (std::size_t i = first; i <= last; ++i) s.centre += run[i].point / n;
   Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-  for (std::size_t i = first; i <= last; ++i) scatter += (run[i].point - s.centre) * (run[i].point - s.centre).transpose();
+  for (std::size_t i = first; i <= last; ++i)
+    scatter += (run[i].point - s.centre) * (run[i].point - s.centre).transpose();
   s.direction = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(scatter).eigenvectors().col(1);
   const auto project = [&](const Eigen::Vector2d& p) { return s.centre + s.direction * s.direction.dot(p - s.centre); };
   s.a = project(run[first].point);
@@ -142,7 +143,8 @@ std::vector<ScanLandmark> extract_scan_landmarks(const LaserScan& scan, const Sc
       if (t.first != s.last) continue;  // not neighbours on the run
       const double angle = std::acos(std::min(1.0, std::abs(s.direction.dot(t.direction))));
       Eigen::Vector2d c;
-      if (angle < o.corner_min_angle || !intersect(s, t, c) || (c - run[s.last].point).norm() > o.corner_max_gap) continue;
+      if (angle < o.corner_min_angle || !intersect(s, t, c) || (c - run[s.last].point).norm() > o.corner_max_gap)
+        continue;
       out.push_back({ScanLandmark::Kind::kCorner, c, o.corner_sigma * o.corner_sigma * Eigen::Matrix2d::Identity()});
     }
     if (!o.line_ends || segs.empty()) continue;
@@ -150,7 +152,8 @@ std::vector<ScanLandmark> extract_scan_landmarks(const LaserScan& scan, const Sc
     if (head.first == 0 && end_is_free(scan, run.front(), head, -1, o) && end_is_steep(run.front(), head, scan, o)) {
       out.push_back(line_end(head.a, head, run.front().range, scan, o));
     }
-    if (tail.last == run.size() - 1 && end_is_free(scan, run.back(), tail, +1, o) && end_is_steep(run.back(), tail, scan, o)) {
+    if (tail.last == run.size() - 1 && end_is_free(scan, run.back(), tail, +1, o) &&
+        end_is_steep(run.back(), tail, scan, o)) {
       out.push_back(line_end(tail.b, tail, run.back().range, scan, o));
     }
   }

@@ -38,9 +38,8 @@ RangeBearing observe_point(const Pose2& pose, const Eigen::Vector2d& p, const Se
           range_bearing_noise(s.sigma_range, s.sigma_bearing)};
 }
 
-std::vector<RangeBearing> sense(const Pose2& pose, const std::vector<Eigen::Vector2d>& features,
-                                const SensorOptions& s, double alpha, double beta, std::mt19937_64& rng,
-                                int& detections) {
+std::vector<RangeBearing> sense(const Pose2& pose, const std::vector<Eigen::Vector2d>& features, const SensorOptions& s,
+                                double alpha, double beta, std::mt19937_64& rng, int& detections) {
   std::normal_distribution<double> n(0.0, 1.0);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<RangeBearing> z;

@@ -69,7 +69,8 @@ StudyResult run_study(const StudyOptions& study, const HybridOptions& filter, co
     for (std::size_t level = 0; level < levels; ++level) {
       StudyCell c{filters[f], level, 0, 0, 0.0, 0.0, {}};
       for (int trial = 0; trial < study.trials; ++trial) {
-        const TrialResult& r = outcome[level * static_cast<std::size_t>(study.trials) + static_cast<std::size_t>(trial)][f];
+        const TrialResult& r =
+            outcome[level * static_cast<std::size_t>(study.trials) + static_cast<std::size_t>(trial)][f];
         c.successes += r.success ? 1 : 0;
         if (!r.success) c.failures.emplace_back(trial, r.failed_at);
         c.trials += 1;

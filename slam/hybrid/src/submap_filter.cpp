@@ -7,8 +7,8 @@
 
 namespace lookahead::slam::hybrid {
 
-SubmapFilter::SubmapFilter(std::unique_ptr<LocalFrontEnd> front_end, const HybridOptions& options,
-                           const Pose2& start, bool fuse)
+SubmapFilter::SubmapFilter(std::unique_ptr<LocalFrontEnd> front_end, const HybridOptions& options, const Pose2& start,
+                           bool fuse)
     : front_(std::move(front_end)), options_(options), global_(options.fusion, start), fuse_(fuse) {
   if (fuse && !(options.fusion.period > 0.0)) throw std::invalid_argument("fusion.period must be > 0");
 }

@@ -12,23 +12,26 @@ namespace lookahead::slam::hybrid {
 
 std::string filter_name(FilterKind kind) {
   switch (kind) {
-    case FilterKind::kFastSlam: return "FASTSLAM";
-    case FilterKind::kEkf: return "EKF";
-    case FilterKind::kHybrid: return "HYBRID";
-    case FilterKind::kHybridAdaptive: return "HYBRID-ADAPTIVE";
+    case FilterKind::kFastSlam:
+      return "FASTSLAM";
+    case FilterKind::kEkf:
+      return "EKF";
+    case FilterKind::kHybrid:
+      return "HYBRID";
+    case FilterKind::kHybridAdaptive:
+      return "HYBRID-ADAPTIVE";
   }
   return "?";
 }
 
-std::unique_ptr<SubmapFilter> make_filter(FilterKind kind, const HybridOptions& options,
-                                          const Pose2& start, std::uint64_t seed) {
+std::unique_ptr<SubmapFilter> make_filter(FilterKind kind, const HybridOptions& options, const Pose2& start,
+                                          std::uint64_t seed) {
   HybridOptions o = options;
   o.fusion.adaptive = kind == FilterKind::kHybridAdaptive;
   if (kind == FilterKind::kEkf) {
     return std::make_unique<SubmapFilter>(std::make_unique<EkfFrontEnd>(o), o, start, true);
   }
-  return std::make_unique<SubmapFilter>(std::make_unique<FastSlam>(o, seed), o, start,
-                                        kind != FilterKind::kFastSlam);
+  return std::make_unique<SubmapFilter>(std::make_unique<FastSlam>(o, seed), o, start, kind != FilterKind::kFastSlam);
 }
 
 double pose_nees(const Pose2& truth, const PoseGaussian& estimate) {
@@ -39,9 +42,8 @@ double pose_nees(const Pose2& truth, const PoseGaussian& estimate) {
   return std::isfinite(d2) ? d2 : INFINITY;
 }
 
-TrialResult run_trial(FilterKind kind, const SimulatedRun& run, const HybridOptions& options,
-                      std::uint64_t seed, const FailureRule& rule, bool stop_at_failure,
-                      const StepObserver& observer) {
+TrialResult run_trial(FilterKind kind, const SimulatedRun& run, const HybridOptions& options, std::uint64_t seed,
+                      const FailureRule& rule, bool stop_at_failure, const StepObserver& observer) {
   const auto start = std::chrono::steady_clock::now();
   auto filter = make_filter(kind, options, run.start, seed);
   TrialResult r;

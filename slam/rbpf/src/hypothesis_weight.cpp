@@ -5,11 +5,9 @@
 
 namespace lookahead::slam {
 
-HypothesisScore score_on_hypotheses(const OccupancyGrid& map, const Pose2& robot,
-                                    const PreparedScan& scan,
+HypothesisScore score_on_hypotheses(const OccupancyGrid& map, const Pose2& robot, const PreparedScan& scan,
                                     const std::vector<std::shared_ptr<const HypothesisMap>>& hypotheses,
-                                    const std::vector<Pose2>& offsets,
-                                    const LikelihoodFieldModel& model) {
+                                    const std::vector<Pose2>& offsets, const LikelihoodFieldModel& model) {
   HypothesisScore score;
   if (hypotheses.empty()) return score;
   const Pose2 laser = robot.compose(scan.laser_offset);

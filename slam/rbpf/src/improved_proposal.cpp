@@ -8,11 +8,10 @@
 
 namespace lookahead::slam {
 
-ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous,
-                                    const Pose2& u, const Pose2& mode, const PreparedScan& scan,
-                                    const LikelihoodFieldModel& likelihood,
-                                    const OdometryMotionModel& motion,
-                                    const ProposalOptions& options, std::mt19937_64& rng) {
+ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
+                                    const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
+                                    const OdometryMotionModel& motion, const ProposalOptions& options,
+                                    std::mt19937_64& rng) {
   // K = 27 points on a 3x3x3 lattice centred on the mode; offsets kept relative to the mode
   // so angles never wrap inside the sums.
   std::array<Eigen::Vector3d, 27> offsets;
@@ -23,8 +22,7 @@ ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& prev
     for (int j = -1; j <= 1; ++j) {
       for (int a = -1; a <= 1; ++a, ++k) {
         offsets[k] = {i * options.kernel_linear, j * options.kernel_linear, a * options.kernel_angular};
-        const Pose2 x{mode.x + offsets[k].x(), mode.y + offsets[k].y(),
-                      normalize_angle(mode.theta + offsets[k].z())};
+        const Pose2 x{mode.x + offsets[k].x(), mode.y + offsets[k].y(), normalize_angle(mode.theta + offsets[k].z())};
         log_tau[k] = likelihood.log_likelihood(grid, x, scan) + motion.log_density(previous, u, x);
         max_log = std::max(max_log, log_tau[k]);
       }

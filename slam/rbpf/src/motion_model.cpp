@@ -33,8 +33,7 @@ void OdometryMotionModel::sigmas(const Pose2& u, double& sx, double& sy, double&
   st = std::max(o_.min_sigma_theta, o_.stt * at + o_.srt * std::hypot(u.x, u.y));
 }
 
-Pose2 OdometryMotionModel::sample(const Pose2& previous, const Pose2& u,
-                                  std::mt19937_64& rng) const {
+Pose2 OdometryMotionModel::sample(const Pose2& previous, const Pose2& u, std::mt19937_64& rng) const {
   double sx, sy, st;
   sigmas(u, sx, sy, st);
   std::normal_distribution<double> n(0.0, 1.0);
@@ -42,8 +41,7 @@ Pose2 OdometryMotionModel::sample(const Pose2& previous, const Pose2& u,
   return previous.compose(noisy);
 }
 
-double OdometryMotionModel::log_density(const Pose2& previous, const Pose2& u,
-                                        const Pose2& x) const {
+double OdometryMotionModel::log_density(const Pose2& previous, const Pose2& u, const Pose2& x) const {
   double sx, sy, st;
   sigmas(u, sx, sy, st);
   const Pose2 d = previous.between(x);

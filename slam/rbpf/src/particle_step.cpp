@@ -14,8 +14,8 @@ bool draw_particle(const ParticleStepModels& m, const OccupancyGrid& map, Pose2&
   if (match_scan) match = m.matcher.match(map, predicted, prepared);
   bool failed = false;
   if (match_scan && match.ok) {
-    const ProposalDraw d = draw_improved_proposal(map, pose, u, match.pose, prepared, m.likelihood,
-                                                  m.motion, m.options.proposal, rng);
+    const ProposalDraw d =
+        draw_improved_proposal(map, pose, u, match.pose, prepared, m.likelihood, m.motion, m.options.proposal, rng);
     pose = d.pose;
     log_weight += m.options.weight_exponent * d.log_eta;
   } else {
@@ -28,9 +28,8 @@ bool draw_particle(const ParticleStepModels& m, const OccupancyGrid& map, Pose2&
   return failed;
 }
 
-bool advance_particle(const ParticleStepModels& m, OccupancyGrid& map, Pose2& pose,
-                      double& log_weight, const Pose2& u, const LaserScan& scan,
-                      const PreparedScan& prepared, bool warm, std::mt19937_64& rng) {
+bool advance_particle(const ParticleStepModels& m, OccupancyGrid& map, Pose2& pose, double& log_weight, const Pose2& u,
+                      const LaserScan& scan, const PreparedScan& prepared, bool warm, std::mt19937_64& rng) {
   const bool failed = draw_particle(m, map, pose, log_weight, u, prepared, warm, rng);
   insert_scan(map, pose, scan, m.options.insert);
   return failed;

@@ -1,19 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/rbpf/rbpf.hpp"
 
+#include <fmt/format.h>
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include <fmt/format.h>
-
-#include "lookahead/slam/sensor/scan_inserter.hpp"
 #include "lookahead/slam/limits/input_limits.hpp"
 #include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::slam {
 namespace {
@@ -44,9 +43,9 @@ void validate(const RbpfOptions& o) {
 // the first update the particles hold about N times the tiles the first scan wrote.
 void check_particle_memory(const OccupancyGrid& first_map, int particles) {
   const auto tiles = static_cast<double>(first_map.tile_count());
-  limits::check_memory(particles * tiles * sizeof(GridTile),
-                       fmt::format("{} particles x {} map tiles of {} bytes", particles,
-                                   first_map.tile_count(), sizeof(GridTile)));
+  limits::check_memory(
+      particles * tiles * sizeof(GridTile),
+      fmt::format("{} particles x {} map tiles of {} bytes", particles, first_map.tile_count(), sizeof(GridTile)));
 }
 
 }  // namespace
@@ -88,13 +87,11 @@ void Rbpf::initialize(const LaserScan& scan) {
 
 bool Rbpf::motion_threshold_met(const LaserScan& scan) const {
   const Pose2 moved = last_update_odometry_.between(scan.odometry);
-  return moved.norm() >= options_.linear_update ||
-         std::abs(moved.theta) >= options_.angular_update;
+  return moved.norm() >= options_.linear_update || std::abs(moved.theta) >= options_.angular_update;
 }
 
-void Rbpf::update_particle(Particle& p, const Pose2& u, const LaserScan& scan,
-                           const PreparedScan& prepared, std::mt19937_64& rng,
-                           bool& failed, HypothesisScore& on_hypotheses) const {
+void Rbpf::update_particle(Particle& p, const Pose2& u, const LaserScan& scan, const PreparedScan& prepared,
+                           std::mt19937_64& rng, bool& failed, HypothesisScore& on_hypotheses) const {
   const bool warm = stats_.updates > static_cast<std::size_t>(options_.warmup_updates);
   const ParticleStepModels models{options_, motion_, likelihood_, matcher_};
   failed = draw_particle(models, p.map, p.pose, p.log_weight, u, prepared, warm, rng);

@@ -22,8 +22,7 @@ double effective_sample_size(const std::vector<double>& weights) {
   return s > 0 ? 1.0 / s : 0.0;
 }
 
-std::vector<std::size_t> low_variance_resample(const std::vector<double>& weights,
-                                               std::mt19937_64& rng) {
+std::vector<std::size_t> low_variance_resample(const std::vector<double>& weights, std::mt19937_64& rng) {
   const std::size_t n = weights.size();
   std::vector<std::size_t> keep;
   keep.reserve(n);

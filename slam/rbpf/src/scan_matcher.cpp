@@ -5,8 +5,7 @@
 
 namespace lookahead::slam {
 
-MatchResult ScanMatcher::match(const OccupancyGrid& grid, const Pose2& start,
-                               const PreparedScan& scan) const {
+MatchResult ScanMatcher::match(const OccupancyGrid& grid, const Pose2& start, const PreparedScan& scan) const {
   MatchResult r;
   r.pose = start;
   r.log_likelihood = model_.log_likelihood(grid, start, scan);

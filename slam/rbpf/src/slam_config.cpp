@@ -70,11 +70,10 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v("max_hypotheses", o.prediction.max_hypotheses, "hypotheses kept at once (oldest dropped)");
 }
 
-
 }  // namespace
 
-RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& source,
-                               const RbpfOptions& base, const std::set<std::string>& other_sections) {
+RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& source, const RbpfOptions& base,
+                               const std::set<std::string>& other_sections) {
   const YAML::Node root = config::parse_sections(yaml, source);
   RbpfOptions o = base;
   if (root.IsNull()) return o;

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/segslam/binned_icp.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
-
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 
 namespace lookahead::slam::segslam {
 namespace {
@@ -26,13 +25,16 @@ class BinIndex {
   BinIndex(Points2 points, double cell) : points_(std::move(points)), cell_(cell) {
     if (points_.empty()) return;
     double x0 = points_[0].x(), y0 = points_[0].y(), x1 = x0, y1 = y0;
-    for (const auto& p : points_) x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y()), x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
+    for (const auto& p : points_)
+      x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y()), x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
     ix0_ = static_cast<long>(std::floor(x0 / cell_)), iy0_ = static_cast<long>(std::floor(y0 / cell_));
-    w_ = static_cast<long>(std::floor(x1 / cell_)) - ix0_ + 1, h_ = static_cast<long>(std::floor(y1 / cell_)) - iy0_ + 1;
+    w_ = static_cast<long>(std::floor(x1 / cell_)) - ix0_ + 1,
+    h_ = static_cast<long>(std::floor(y1 / cell_)) - iy0_ + 1;
     start_.assign(static_cast<std::size_t>(w_ * h_ + 1), 0);
     std::vector<std::size_t> cell_of(points_.size());
     for (std::size_t i = 0; i < points_.size(); ++i) {
-      cell_of[i] = static_cast<std::size_t>(slot(static_cast<long>(std::floor(points_[i].x() / cell_)), static_cast<long>(std::floor(points_[i].y() / cell_))));
+      cell_of[i] = static_cast<std::size_t>(slot(static_cast<long>(std::floor(points_[i].x() / cell_)),
+                                                 static_cast<long>(std::floor(points_[i].y() / cell_))));
       ++start_[cell_of[i] + 1];
     }
     for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
@@ -78,7 +80,7 @@ class BinIndex {
   Points2 points_;
   double cell_;
   long ix0_ = 0, iy0_ = 0, w_ = 0, h_ = 0;  // first cell and extent of the grid [cells]
-  std::vector<std::size_t> start_;  // cell c's points are order_[start_[c] .. start_[c + 1])
+  std::vector<std::size_t> start_;          // cell c's points are order_[start_[c] .. start_[c + 1])
   std::vector<std::size_t> order_;
 };
 
@@ -100,7 +102,8 @@ Points2 bin_points(const Points2& points, double bin) {
   out.reserve(sums.size());
   for (const auto& [key, sn] : sums) out.push_back(sn.first / sn.second);
   // Hash order is not portable: sort so results do not depend on the library.
-  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  std::sort(out.begin(), out.end(),
+            [](const auto& a, const auto& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
   return out;
 }
 
@@ -145,8 +148,7 @@ IcpResult icp_binned(const Points2& source, const Points2& target, const Pose2& 
   return icp_binned(source, IcpTarget(target, o), guess, o);
 }
 
-IcpResult icp_binned(const Points2& source, const IcpTarget& prepared, const Pose2& guess,
-                     const IcpOptions& o) {
+IcpResult icp_binned(const Points2& source, const IcpTarget& prepared, const Pose2& guess, const IcpOptions& o) {
   IcpResult r;
   r.transform = guess;
   const BinIndex& index = prepared.data_->index;

@@ -17,7 +17,8 @@ using detail::IndexGrid;
 // above, an upper bound of the score over the block of translations that starts at (x, y).
 int count_near(const NearField& f, std::size_t level, double x, double y, const Points2& rotated, double inv) {
   int near = 0;
-  for (const auto& p : rotated) near += f.near(level, NearField::floor_int((x + p.x()) * inv), NearField::floor_int((y + p.y()) * inv));
+  for (const auto& p : rotated)
+    near += f.near(level, NearField::floor_int((x + p.x()) * inv), NearField::floor_int((y + p.y()) * inv));
   return near;
 }
 

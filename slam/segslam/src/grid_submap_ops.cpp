@@ -33,7 +33,9 @@ Points2 obstacle_points(const OccupancyGrid& map) {
       for (int i = 0; i < GridTile::kCells; ++i) {
         if (!(t->flags[static_cast<std::size_t>(i)] & GridTile::kObstacle)) continue;
         double cx, cy;
-        map.cell_center({(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)}, cx, cy);
+        map.cell_center(
+            {(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)},
+            cx, cy);
         out.emplace_back(cx, cy);
       }
     }
@@ -120,7 +122,8 @@ PoseGrid coarse_pose_grid(const OccupancyGrid& map, const MatchingOptions& o) {
   return {o.search_radius, step, o.search_angle, 0.05};
 }
 
-GridMatchTarget match_target_of(const OccupancyGrid& map, const MatchingOptions& o, const LikelihoodFieldModel& likelihood) {
+GridMatchTarget match_target_of(const OccupancyGrid& map, const MatchingOptions& o,
+                                const LikelihoodFieldModel& likelihood) {
   return {NearField(map, GridTile::kFar - 1, branch_and_bound_dilations(coarse_pose_grid(map, o), map.resolution())),
           NearField(map, likelihood.hit_dist2()), icp_target_of(map, o)};
 }
@@ -149,7 +152,8 @@ void add_child_evidence(OccupancyGrid& into, const OccupancyGrid& child) {
       for (int i = 0; i < GridTile::kCells; ++i) {
         const int l = t->log_odds[static_cast<std::size_t>(i)];
         if (l == GridTile::kUnknown) continue;
-        const CellIndex cell{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)};
+        const CellIndex cell{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)),
+                             (ty << GridTile::kBits) + (i >> GridTile::kBits)};
         if (into.is_known(cell)) continue;
         into.add_log_odds(cell, l);
       }
@@ -177,18 +181,21 @@ void MapCanvas::paste(const OccupancyGrid& map, const Pose2& frame, const Occupa
         if (l == GridTile::kUnknown) continue;
         const auto pl = shared ? shared->log_odds[static_cast<std::size_t>(i)] : GridTile::kUnknown;
         const double delta = (l - (pl == GridTile::kUnknown ? 0 : pl)) * scale;
-        const CellIndex cell{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)};
+        const CellIndex cell{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)),
+                             (ty << GridTile::kBits) + (i >> GridTile::kBits)};
         double x, y;
         map.cell_center(cell, x, y);
         const double wx = frame.x + c * x - s * y, wy = frame.y + s * x + c * y;
-        auto& [sum, n] = mine[key(static_cast<int>(std::floor(wx / resolution_)), static_cast<int>(std::floor(wy / resolution_)))];
+        auto& [sum, n] =
+            mine[key(static_cast<int>(std::floor(wx / resolution_)), static_cast<int>(std::floor(wy / resolution_)))];
         sum += delta;
         ++n;
       }
     }
   }
   for (const auto& [k, sn] : mine) {
-    cells_.push_back({{static_cast<int>(k >> 32), static_cast<int>(static_cast<std::uint32_t>(k & 0xffffffff))}, sn.first / sn.second});
+    cells_.push_back({{static_cast<int>(k >> 32), static_cast<int>(static_cast<std::uint32_t>(k & 0xffffffff))},
+                      sn.first / sn.second});
   }
 }
 

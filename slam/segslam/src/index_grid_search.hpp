@@ -86,8 +86,7 @@ inline void push_sorted(std::vector<Block>& blocks, std::vector<Block>& stack) {
 /// The result of exhaustive_search, bit for bit, from blocks of at most 2^top translations
 /// per axis: `bound` must hold levels 0..top.
 template <typename Bound>
-std::optional<GridHit> branch_and_bound(const IndexGrid& g, std::size_t top, const Bound& bound,
-                                        int to_beat) {
+std::optional<GridHit> branch_and_bound(const IndexGrid& g, std::size_t top, const Bound& bound, int to_beat) {
   const auto block = [&](std::size_t level, int a, int i, int j) {
     return bnb::Block{level, a, i, j, bound(level, a, i, j), g.order(a, i, j)};
   };

@@ -68,7 +68,11 @@ struct Scorer {
   const int guess_score;
 
   Scorer(const NearOccupiedField& f, const Points3& points, const Pose4& g, const LevelPoseGrid& grid)
-      : field(f), guess(g), step(grid.step), index(grid), headings(headings_of(f, points, g, grid, index)),
+      : field(f),
+        guess(g),
+        step(grid.step),
+        index(grid),
+        headings(headings_of(f, points, g, grid, index)),
         guess_score(near_in_plane_count(f, g, points)) {}
 
   int operator()(std::size_t level, int a, int i, int j) const {
@@ -182,19 +186,19 @@ IndexBox index_box(const IndexGrid& g, const Pose4& guess, const LevelPoseGrid& 
   const auto to = [](double v) { return static_cast<int>(std::floor(v + kSlack)); };
   const double dx = part.centre.x - guess.x, dy = part.centre.y - guess.y;
   const double dyaw = normalize_angle(part.centre.yaw - guess.yaw);
-  return {std::max(-g.na, from((dyaw - part.angle) / grid.angle_step)), std::min(g.na, to((dyaw + part.angle) / grid.angle_step)),
-          std::max(-g.n, from((dx - part.radius) / grid.step)), std::min(g.n, to((dx + part.radius) / grid.step)),
-          std::max(-g.n, from((dy - part.radius) / grid.step)), std::min(g.n, to((dy + part.radius) / grid.step))};
+  return {std::max(-g.na, from((dyaw - part.angle) / grid.angle_step)),
+          std::min(g.na, to((dyaw + part.angle) / grid.angle_step)),
+          std::max(-g.n, from((dx - part.radius) / grid.step)),
+          std::min(g.n, to((dx + part.radius) / grid.step)),
+          std::max(-g.n, from((dy - part.radius) / grid.step)),
+          std::min(g.n, to((dy + part.radius) / grid.step))};
 }
 
 }  // namespace
 
-std::vector<std::vector<LevelCoarseResult>> level_search_peaks_within(const NearOccupiedField& field,
-                                                                      const Points3& points, const Pose4& guess,
-                                                                      const LevelPoseGrid& grid,
-                                                                      const std::vector<LevelSubgrid>& parts,
-                                                                      std::size_t count, double separation,
-                                                                      double angle_separation) {
+std::vector<std::vector<LevelCoarseResult>> level_search_peaks_within(
+    const NearOccupiedField& field, const Points3& points, const Pose4& guess, const LevelPoseGrid& grid,
+    const std::vector<LevelSubgrid>& parts, std::size_t count, double separation, double angle_separation) {
   const std::vector<int> widths = level_bound_widths(grid.step, field.resolution());
   if (field.bound_widths() != widths) {
     throw std::invalid_argument("level_search_peaks: the field's bound levels do not fit a " +

@@ -72,7 +72,8 @@ WindowMatch localize_window(const OccupancyGrid& candidate, const LookaheadWindo
   for (const Pose2& p : cloud.x) mean += Eigen::Vector2d(p.x, p.y), sc += std::cos(p.theta), ss += std::sin(p.theta);
   mean /= static_cast<double>(cloud.x.size());
   Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const Pose2& p : cloud.x) cov += (Eigen::Vector2d(p.x, p.y) - mean) * (Eigen::Vector2d(p.x, p.y) - mean).transpose();
+  for (const Pose2& p : cloud.x)
+    cov += (Eigen::Vector2d(p.x, p.y) - mean) * (Eigen::Vector2d(p.x, p.y) - mean).transpose();
   cov /= static_cast<double>(cloud.x.size());
   m.pose = {mean.x(), mean.y(), std::atan2(ss, sc)};
   m.icp_error = rms_point_error(candidate, m.pose, w.cloud);  // err_X

@@ -70,7 +70,8 @@ WindowMatch3 localize_window3(const EvidenceOctree& candidate, const OctreeMatch
   }
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   double z = 0, sc = 0, ss = 0;
-  for (const Pose4& p : cloud) mean += Eigen::Vector2d(p.x, p.y), z += p.z, sc += std::cos(p.yaw), ss += std::sin(p.yaw);
+  for (const Pose4& p : cloud)
+    mean += Eigen::Vector2d(p.x, p.y), z += p.z, sc += std::cos(p.yaw), ss += std::sin(p.yaw);
   mean /= static_cast<double>(cloud.size());
   z /= static_cast<double>(cloud.size());
   Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();

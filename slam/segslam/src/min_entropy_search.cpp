@@ -14,9 +14,7 @@
 
 namespace lookahead::slam::segslam {
 
-double scaled_entropy(const ProbabilityMap& map) {
-  return map_entropy(map).total * map.resolution * map.resolution;
-}
+double scaled_entropy(const ProbabilityMap& map) { return map_entropy(map).total * map.resolution * map.resolution; }
 
 MapSample sample_full_map(const SegSlam& filter, std::size_t particle, std::mt19937_64& rng) {
   const GridSegMap& segmap = filter.segmap();
@@ -60,10 +58,9 @@ SegmentedPath sample_paths(const SegSlam& filter, const MapSample& sample) {
 
 std::vector<Pose2> sample_trajectory_at_every_scan(const SegSlam& filter, const MapSample& sample) {
   const std::vector<LaserScan>& scans = filter.scans();
-  return placed_path_at_every_scan(filter.segmap(), filter.particles().at(sample.particle).submap, sample.placed,
-                                   scans.size(), [&](std::size_t from, std::size_t to) {
-                                     return scans[from].odometry.between(scans[to].odometry);
-                                   });
+  return placed_path_at_every_scan(
+      filter.segmap(), filter.particles().at(sample.particle).submap, sample.placed, scans.size(),
+      [&](std::size_t from, std::size_t to) { return scans[from].odometry.between(scans[to].odometry); });
 }
 
 MinEntropyResult min_entropy_search(const SegSlam& filter, int samples, std::uint64_t seed, int threads) {

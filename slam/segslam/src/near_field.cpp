@@ -39,7 +39,8 @@ NearField::NearField(const OccupancyGrid& map, int max_dist2, const std::vector<
           if (t->dist2[static_cast<std::size_t>(i)] > max_dist2) continue;
           const int x = (tx << GridTile::kBits) + (i & (GridTile::kSide - 1)) - base.x0;
           const int y = (ty << GridTile::kBits) + (i >> GridTile::kBits) - base.y0;
-          base.words[static_cast<std::size_t>(y) * base.row_words + static_cast<std::size_t>(x >> 6)] |= std::uint64_t{1} << (x & 63);
+          base.words[static_cast<std::size_t>(y) * base.row_words + static_cast<std::size_t>(x >> 6)] |=
+              std::uint64_t{1} << (x & 63);
         }
       }
     }
@@ -80,7 +81,8 @@ NearField::Bits NearField::dilated(const Bits& base, int w) {
   for (int covered = 1; covered < w;) {
     const int s = std::min(covered, w - covered);
     for (int y = d.height; y-- > s;) {
-      const std::size_t at = static_cast<std::size_t>(y) * d.row_words, below = static_cast<std::size_t>(y - s) * d.row_words;
+      const std::size_t at = static_cast<std::size_t>(y) * d.row_words,
+                        below = static_cast<std::size_t>(y - s) * d.row_words;
       for (std::size_t i = 0; i < d.row_words; ++i) d.words[at + i] |= d.words[below + i];
     }
     covered += s;

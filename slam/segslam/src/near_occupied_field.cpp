@@ -45,7 +45,9 @@ NearOccupiedField::NearOccupiedField(const EvidenceOctree& map, const std::vecto
   }
   const auto above = static_cast<float>(map.options().occupied_above);
   std::vector<OctreeKey> occupied;
-  map.for_each_voxel([&](const OctreeKey& k, float l) { if (l > above) occupied.push_back(k); });
+  map.for_each_voxel([&](const OctreeKey& k, float l) {
+    if (l > above) occupied.push_back(k);
+  });
   if (occupied.empty()) return;
   long x1 = 0, y1 = 0, z1 = 0;
   x0_ = y0_ = z0_ = std::numeric_limits<long>::max();
@@ -64,7 +66,8 @@ NearOccupiedField::NearOccupiedField(const EvidenceOctree& map, const std::vecto
       for (long dy = -1; dy <= 1; ++dy) {
         for (long dx = -1; dx <= 1; ++dx) {
           const long x = k.x - x0_ + dx, y = k.y - y0_ + dy, z = k.z - z0_ + dz;
-          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |= std::abs(dz) <= 1 ? kNear | kNearInPlane : kNearInPlane;
+          bits_[static_cast<std::size_t>((z * ny_ + y) * nx_ + x)] |=
+              std::abs(dz) <= 1 ? kNear | kNearInPlane : kNearInPlane;
         }
       }
     }
@@ -91,10 +94,12 @@ void NearOccupiedField::build_bounds() {
     int covered = 1;
     for (std::size_t l = 0; l < bound_widths_.size(); ++l) {
       const int w = bound_widths_[l];
-      for (long y = 0; y < ny_; ++y) spread(plane, static_cast<std::size_t>(y * nx_), static_cast<std::size_t>(nx_), covered, w);
+      for (long y = 0; y < ny_; ++y)
+        spread(plane, static_cast<std::size_t>(y * nx_), static_cast<std::size_t>(nx_), covered, w);
       spread_rows(plane, static_cast<std::size_t>(nx_), static_cast<std::size_t>(ny_), covered, w);
       covered = w;
-      for (std::size_t i = 0; i < plane_size; ++i) bits_[slice + i] |= static_cast<std::uint8_t>(plane[i] << (kLevelShift + l + 1));
+      for (std::size_t i = 0; i < plane_size; ++i)
+        bits_[slice + i] |= static_cast<std::uint8_t>(plane[i] << (kLevelShift + l + 1));
     }
   }
 }

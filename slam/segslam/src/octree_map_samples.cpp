@@ -46,10 +46,11 @@ OctreeMapSample particle_chain_sample(const SegSlam3d& filter, std::size_t parti
 
 std::vector<Pose4> sample_trajectory_at_every_sweep(const SegSlam3d& filter, const OctreeMapSample& sample) {
   const auto& sweeps = filter.sweeps();
-  return placed_path_at_every_scan(filter.segmap(), filter.particles().at(sample.particle).submap, sample.placed,
-                                   sweeps.size(), [&](std::size_t from, std::size_t to) {
-                                     return Pose4::level_of(sweeps[from].odometry).between(Pose4::level_of(sweeps[to].odometry));
-                                   });
+  return placed_path_at_every_scan(
+      filter.segmap(), filter.particles().at(sample.particle).submap, sample.placed, sweeps.size(),
+      [&](std::size_t from, std::size_t to) {
+        return Pose4::level_of(sweeps[from].odometry).between(Pose4::level_of(sweeps[to].odometry));
+      });
 }
 
 SegmentedPath sample_paths(const SegSlam3d& filter, const OctreeMapSample& sample) {

@@ -42,7 +42,6 @@ bool explained(OctreeReader& reader, const OctreeGrid& grid, float occupied_abov
   return false;
 }
 
-
 // Why a match fails its acceptance tests, or "" when it passes them.
 const char* rejection_of(const Icp3Result& icp, const StructureFit& f, const MatchingOptions& o,
                          const StructureTestOptions& so) {
@@ -56,7 +55,9 @@ const char* rejection_of(const Icp3Result& icp, const StructureFit& f, const Mat
 }  // namespace
 
 // Steps of 1.5 voxels miss no peak, as the near field reaches one voxel around a surface.
-LevelPoseGrid coarse_grid(const MatchingOptions& o) { return {o.search_radius, 1.5 * o.bin_size, o.search_angle, 0.05}; }
+LevelPoseGrid coarse_grid(const MatchingOptions& o) {
+  return {o.search_radius, 1.5 * o.bin_size, o.search_angle, 0.05};
+}
 
 double share_of(int count, const Points3& points) {
   return points.empty() ? 0.0 : static_cast<double>(count) / static_cast<double>(points.size());
@@ -128,8 +129,9 @@ WindowMatch3 match_window(const OctreeMatchTarget& target, const SweepWindow& w,
 }
 
 std::vector<std::vector<LevelCoarseResult>> region_peaks(const OctreeMatchTarget& target, const SweepWindow& w,
-                                                         const std::vector<LevelSubgrid>& regions, const MatchingOptions& o,
-                                                         std::size_t count, double separation, double angle_separation) {
+                                                         const std::vector<LevelSubgrid>& regions,
+                                                         const MatchingOptions& o, std::size_t count, double separation,
+                                                         double angle_separation) {
   const LevelSubgrid all = covering_subgrid(regions.front(), regions);
   MatchingOptions grid = o;
   grid.search_radius = all.radius;
@@ -168,7 +170,8 @@ std::vector<WindowMatch3> match_regions(const OctreeMatchTarget& target, const S
   for (std::size_t r = 0; r < regions.size(); ++r) {
     // As level_search_branch_and_bound: the guess stands unless a grid pose scores more.
     seeds[r] = {regions[r].centre, near_in_plane_count(target.field, regions[r].centre, w.scored)};
-    if (!peaks[r].empty() && peaks[r].front().score > seeds[r].score) seeds[r] = {peaks[r].front().pose, peaks[r].front().score};
+    if (!peaks[r].empty() && peaks[r].front().score > seeds[r].score)
+      seeds[r] = {peaks[r].front().pose, peaks[r].front().score};
     seeds[r].pose.z = regions[r].centre.z;
     poses.push_back(seeds[r].pose);
   }

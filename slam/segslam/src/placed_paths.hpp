@@ -39,11 +39,11 @@ std::vector<PlacedSubmap<Pose>> chain_placement(const SegMap<Map, Pose>& segmap,
 
 /// The placed submaps (the first is `open`, the others by id), oldest first.
 template <class Map, class Pose>
-std::vector<std::pair<const Submap<Map, Pose>*, Pose>> placed_in_time_order(const SegMap<Map, Pose>& segmap,
-                                                                           const Submap<Map, Pose>& open,
-                                                                           const std::vector<PlacedSubmap<Pose>>& placed) {
+std::vector<std::pair<const Submap<Map, Pose>*, Pose>> placed_in_time_order(
+    const SegMap<Map, Pose>& segmap, const Submap<Map, Pose>& open, const std::vector<PlacedSubmap<Pose>>& placed) {
   std::vector<std::pair<const Submap<Map, Pose>*, Pose>> out;
-  for (std::size_t i = 0; i < placed.size(); ++i) out.push_back({i == 0 ? &open : &segmap.at(placed[i].id), placed[i].frame});
+  for (std::size_t i = 0; i < placed.size(); ++i)
+    out.push_back({i == 0 ? &open : &segmap.at(placed[i].id), placed[i].frame});
   std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
     return a.first->interval.first_scan < b.first->interval.first_scan;
   });

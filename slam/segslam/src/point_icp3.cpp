@@ -93,7 +93,8 @@ void IcpTarget3::index_cells() {
                                 " x " + std::to_string(nz_) + " cells, more than " + std::to_string(kMaxCells));
   }
   const auto cell = [&](const Eigen::Vector3d& p) {
-    return static_cast<std::size_t>(((cell_of(p.z()) - z0_) * ny_ + (cell_of(p.y()) - y0_)) * nx_ + (cell_of(p.x()) - x0_));
+    return static_cast<std::size_t>(((cell_of(p.z()) - z0_) * ny_ + (cell_of(p.y()) - y0_)) * nx_ +
+                                    (cell_of(p.x()) - x0_));
   };
   first_.assign(static_cast<std::size_t>(nx_ * ny_ * nz_) + 1, 0);
   for (const auto& p : points_) ++first_[cell(p) + 1];

@@ -11,14 +11,14 @@
 #include <mutex>
 #include <tuple>
 
-#include "lookahead/slam/sensor/scan_inserter.hpp"
-#include "lookahead/slam/limits/input_limits.hpp"
-#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "candidate_reach.hpp"
 #include "compute_once.hpp"
+#include "lookahead/slam/limits/input_limits.hpp"
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
+#include "lookahead/slam/sensor/scan_inserter.hpp"
 #include "segmentation.hpp"
 #include "submap_choice.hpp"
 #include "trajectory_reconstruction.hpp"
@@ -27,7 +27,7 @@ namespace lookahead::slam::segslam {
 
 struct SegSlam::Transition {
   bool closed_one = false;
-  GridSubmap closed;  ///< the submap the particle left, to store in the SegMap
+  GridSubmap closed;                ///< the submap the particle left, to store in the SegMap
   double closed_entry_error = 0.0;  ///< err_ICP of the match that opened `closed`
   std::size_t candidate = kNoSubmap;
   double weight = 0.0;
@@ -75,10 +75,10 @@ void SegSlam::initialize() {
   p.submap.map = prototype_grid_;
   insert_scan(p.submap.map, p.pose, s, rbpf_.insert);
   // Each particle copies the tiles a scan touches (copy-on-write): N times the first scan's.
-  limits::check_memory(static_cast<double>(rbpf_.particles) * static_cast<double>(p.submap.map.tile_count()) *
-                           sizeof(GridTile),
-                       fmt::format("{} particles x {} map tiles of {} bytes", rbpf_.particles,
-                                   p.submap.map.tile_count(), sizeof(GridTile)));
+  limits::check_memory(
+      static_cast<double>(rbpf_.particles) * static_cast<double>(p.submap.map.tile_count()) * sizeof(GridTile),
+      fmt::format("{} particles x {} map tiles of {} bytes", rbpf_.particles, p.submap.map.tile_count(),
+                  sizeof(GridTile)));
   p.submap.path.push_back({0, p.pose});
   particles_.assign(static_cast<std::size_t>(rbpf_.particles), p);
   next_pending_ = 1;
@@ -90,7 +90,8 @@ LookaheadWindow SegSlam::window_after(std::size_t scan) const {
   LookaheadWindow w;
   const LaserScan& first = scans_[scan];
   std::vector<std::size_t> in{scan};
-  for (std::size_t j = scan + 1; j < scans_.size() && scans_[j].timestamp - first.timestamp <= options_.segmentation.lookahead_s; ++j) {
+  for (std::size_t j = scan + 1;
+       j < scans_.size() && scans_[j].timestamp - first.timestamp <= options_.segmentation.lookahead_s; ++j) {
     in.push_back(j);
   }
   Points2 points;
@@ -108,7 +109,8 @@ LookaheadWindow SegSlam::window_after(std::size_t scan) const {
   const int n = options_.segmentation.predictive_scans;
   if (in.size() > 1) {
     for (int i = 1; i <= n; ++i) {
-      const std::size_t j = in[std::min(in.size() - 1, (in.size() - 1) * static_cast<std::size_t>(i) / static_cast<std::size_t>(n))];
+      const std::size_t j =
+          in[std::min(in.size() - 1, (in.size() - 1) * static_cast<std::size_t>(i) / static_cast<std::size_t>(n))];
       w.scans.push_back(prepare_scan(scans_[j], rbpf_.likelihood));
       w.relative_poses.push_back(first.odometry.between(scans_[j].odometry));
     }
@@ -165,17 +167,20 @@ std::vector<WindowMatch> SegSlam::match_candidates(const SegParticle& p, const L
     if (d > reach.proximity_radius || !has_observed_near(c.map, guess.x, guess.y, reach.proximity_radius)) continue;
     candidates.push_back({d, id, guess, reach});
   }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
-  if (candidates.size() > static_cast<std::size_t>(o.max_candidates)) candidates.resize(static_cast<std::size_t>(o.max_candidates));
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+  if (candidates.size() > static_cast<std::size_t>(o.max_candidates))
+    candidates.resize(static_cast<std::size_t>(o.max_candidates));
   std::vector<WindowMatch> out;
   for (const Candidate& c : candidates) {
     WindowMatch m = screened_match(c.id, c.guess, w, c.reach);
     // The frame's first scan places the match against a reference trajectory.
-    spdlog::debug("scan {} candidate {} [{}-{}] frame {} guess ({:.2f} {:.2f} {:.2f}) -> ({:.2f} {:.2f} {:.2f}) err {:.3f} tau {:.2f} ok {} w {:.3f}",
-                  last_update_, c.id, segmap_.at(c.id).interval.first_scan, segmap_.at(c.id).interval.last_scan,
-                  frame_root(segmap_, segmap_.at(c.id))->interval.first_scan,
-                  c.guess.x, c.guess.y, c.guess.theta, m.pose.x, m.pose.y, m.pose.theta, m.icp_error, m.translation,
-                  m.ok, m.weight);
+    spdlog::debug(
+        "scan {} candidate {} [{}-{}] frame {} guess ({:.2f} {:.2f} {:.2f}) -> ({:.2f} {:.2f} {:.2f}) err {:.3f} tau "
+        "{:.2f} ok {} w {:.3f}",
+        last_update_, c.id, segmap_.at(c.id).interval.first_scan, segmap_.at(c.id).interval.last_scan,
+        frame_root(segmap_, segmap_.at(c.id))->interval.first_scan, c.guess.x, c.guess.y, c.guess.theta, m.pose.x,
+        m.pose.y, m.pose.theta, m.icp_error, m.translation, m.ok, m.weight);
     if (!m.ok) continue;
     ids.push_back(c.id);
     out.push_back(m);
@@ -187,7 +192,8 @@ std::uint64_t SegSlam::localization_seed(const std::tuple<std::size_t, long, lon
   // From the cache key, not the asking particle: the same match whatever the thread order.
   const auto [candidate, x, y, theta] = key;
   const std::uint64_t a = mix_seed(rbpf_.seed, stats_.updates, candidate);
-  return mix_seed(a, static_cast<std::uint64_t>(x) * 0x1000003ull + static_cast<std::uint64_t>(y), static_cast<std::uint64_t>(theta));
+  return mix_seed(a, static_cast<std::uint64_t>(x) * 0x1000003ull + static_cast<std::uint64_t>(y),
+                  static_cast<std::uint64_t>(theta));
 }
 
 WindowMatch SegSlam::screened_match(std::size_t candidate, const Pose2& guess, const LookaheadWindow& w,
@@ -211,20 +217,25 @@ WindowMatch SegSlam::cached_match(std::size_t candidate, const Pose2& guess, con
   const auto key = std::make_tuple(candidate, std::lround(guess.x / kGuessStep), std::lround(guess.y / kGuessStep),
                                    std::lround(guess.theta / 0.1));
   bool searched = false;
-  WindowMatch m = compute_once(match_cache_, cache_mutex_, key, [&] {
-    // Searched from the rounded guess, so the result does not depend on which particle asked
-    // first (determinism under threads).
-    const Pose2 rounded{std::get<1>(key) * kGuessStep, std::get<2>(key) * kGuessStep, normalize_angle(std::get<3>(key) * 0.1)};
-    if (options_.matching.use_localization_filter) {
-      return localize_window(segmap_.at(candidate).map, w, rounded, reach, likelihood_, localization_seed(key));
-    }
-    const auto target = compute_once(match_targets_, cache_mutex_, candidate, [&] {
-      MatchingOptions widest = options_.matching;  // the near field serves every reach up to the cap
-      widest.search_radius = std::max(widest.search_radius, widest.max_search_radius);
-      return std::make_shared<const GridMatchTarget>(match_target_of(segmap_.at(candidate).map, widest, likelihood_));
-    });
-    return match_window(segmap_.at(candidate).map, *target, w, rounded, reach);
-  }, &searched);
+  WindowMatch m = compute_once(
+      match_cache_, cache_mutex_, key,
+      [&] {
+        // Searched from the rounded guess, so the result does not depend on which particle asked
+        // first (determinism under threads).
+        const Pose2 rounded{std::get<1>(key) * kGuessStep, std::get<2>(key) * kGuessStep,
+                            normalize_angle(std::get<3>(key) * 0.1)};
+        if (options_.matching.use_localization_filter) {
+          return localize_window(segmap_.at(candidate).map, w, rounded, reach, likelihood_, localization_seed(key));
+        }
+        const auto target = compute_once(match_targets_, cache_mutex_, candidate, [&] {
+          MatchingOptions widest = options_.matching;  // the near field serves every reach up to the cap
+          widest.search_radius = std::max(widest.search_radius, widest.max_search_radius);
+          return std::make_shared<const GridMatchTarget>(
+              match_target_of(segmap_.at(candidate).map, widest, likelihood_));
+        });
+        return match_window(segmap_.at(candidate).map, *target, w, rounded, reach);
+      },
+      &searched);
   if (searched) {
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     ++stats_.match_attempts;
@@ -239,8 +250,8 @@ SegSlam::Transition SegSlam::predict_submap(SegParticle& p, const std::function<
   Transition t;
   const SegmentationOptions& so = options_.segmentation;
   // SegSLAM eq. (17) only where it can decide (a large enough submap, motion error below its bound).
-  const bool score_it = p.submap_updates >= so.min_segment_updates && p.motion_error < so.max_motion_error &&
-                        so.predictive_threshold > 0;
+  const bool score_it =
+      p.submap_updates >= so.min_segment_updates && p.motion_error < so.max_motion_error && so.predictive_threshold > 0;
   const double score = score_it ? predictive_score(p.submap.map, p.pose, window(), likelihood_) : -1.0;
   const bool segment = should_segment(p.submap_updates, p.motion_error, score, so);
   std::vector<std::size_t> ids;
@@ -314,8 +325,9 @@ void SegSlam::update(std::size_t k) {
       const double before = p.log_weight;
       // A locked submap is localised in, never written (sec. 6).
       failed[static_cast<std::size_t>(i)] =
-          p.submap.locked ? draw_particle(models, p.submap.map, p.pose, p.log_weight, u, prepared, is_warm, rng)
-                          : advance_particle(models, p.submap.map, p.pose, p.log_weight, u, scans_[k], prepared, is_warm, rng);
+          p.submap.locked
+              ? draw_particle(models, p.submap.map, p.pose, p.log_weight, u, prepared, is_warm, rng)
+              : advance_particle(models, p.submap.map, p.pose, p.log_weight, u, scans_[k], prepared, is_warm, rng);
       gain[static_cast<std::size_t>(i)] = p.log_weight - before;
       warm[static_cast<std::size_t>(i)] = is_warm;
       p.submap.path.push_back({k, p.pose});
@@ -331,7 +343,8 @@ void SegSlam::update(std::size_t k) {
   // factor of the other particles, so starting a submap is neither rewarded nor punished.
   double sum = 0;
   int count = 0;
-  for (std::size_t i = 0; i < gain.size(); ++i) if (warm[i]) sum += gain[i], ++count;
+  for (std::size_t i = 0; i < gain.size(); ++i)
+    if (warm[i]) sum += gain[i], ++count;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     if (!warm[i] && count > 0) particles_[i].log_weight += sum / count;
     if (transitions[i].closed_one) store_closed(particles_[i], transitions[i]);

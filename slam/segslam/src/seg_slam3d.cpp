@@ -62,7 +62,7 @@ struct SegSlam3d::SweepModel {
   std::vector<Eigen::Vector3d> ends;  ///< scored end points, robot frame
   std::vector<Ray3> rays;             ///< inserted beams, robot frame
   std::size_t sweep = 0;
-  double motion_error = 0.0;          ///< SegSLAM eq. (13)-(14) increment [m]
+  double motion_error = 0.0;  ///< SegSLAM eq. (13)-(14) increment [m]
 };
 
 namespace {
@@ -82,8 +82,7 @@ SegSlam3d::SegSlam3d(const SegSlam3dOptions& options)
   validate(options_.segslam);
   const SegSlam3dExtras& e = options_.extras;
   if (e.warmup_updates < 0 || !(e.proximity_height > 0) || e.window_points < 10) {
-    throw std::invalid_argument(
-        "segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10");
+    throw std::invalid_argument("segslam3d: warmup_updates >= 0, proximity_height > 0, window_points >= 10");
   }
   validate(e.wide);
   if (!(e.structure.min_inlier_ratio >= 0 && e.structure.min_inlier_ratio <= 1) ||
@@ -130,9 +129,8 @@ void SegSlam3d::initialize(const RangeSweep& first) {
 SweepWindow SegSlam3d::window_after(std::size_t sweep) const {
   const Pose3 start_inverse = Pose4::level_of(sweeps_[sweep].odometry).level_pose3().inverse();
   Points3 all;
-  for (std::size_t j = sweep; j < sweeps_.size() &&
-                              sweeps_[j].time - sweeps_[sweep].time <= options_.segslam.segmentation.lookahead_s;
-       ++j) {
+  for (std::size_t j = sweep;
+       j < sweeps_.size() && sweeps_[j].time - sweeps_[sweep].time <= options_.segslam.segmentation.lookahead_s; ++j) {
     const Pose3 to_start = start_inverse * sweeps_[j].odometry;
     for (const Ray3& r : sweeps_[j].rays) {
       if (r.hit && (r.end - r.origin).norm() <= options_.filter.insert.max_range) all.push_back(to_start * r.end);
@@ -148,8 +146,8 @@ SegSlam3d::Transition SegSlam3d::ask_submap(SegParticle3& p, const SweepWindow& 
   const SegmentationOptions& so = options_.segslam.segmentation;
   const MatchingOptions& mo = options_.segslam.matching;
   // SegSLAM eq. (17) only where it can decide (a large enough submap, motion error below its bound).
-  const bool score_it = p.submap_updates >= so.min_segment_updates && p.motion_error < so.max_motion_error &&
-                        so.predictive_threshold > 0;
+  const bool score_it =
+      p.submap_updates >= so.min_segment_updates && p.motion_error < so.max_motion_error && so.predictive_threshold > 0;
   const double score = score_it ? predictive_score(p.submap.map, p.pose, w) : -1.0;
   t.segment = should_segment(p.submap_updates, p.motion_error, score, so);
   const bool periodic = p.updates_since_match >= mo.period_updates && p.submap_updates >= mo.period_updates;
@@ -176,7 +174,8 @@ void SegSlam3d::choose_submap(SegParticle3& p, Transition& t, const SweepWindow&
   if (draw.choice == SubmapChoice::kSame) return;
   // A pending wide re-entry (wide_reentry.hpp) follows the particle into a fresh frame, which
   // starts at its pose; a match moves it into another candidate's frame, and it is dropped.
-  if (p.pending) p.pending = draw.choice == SubmapChoice::kNew ? std::optional(carried_into(*p.pending, p.pose)) : std::nullopt;
+  if (p.pending)
+    p.pending = draw.choice == SubmapChoice::kNew ? std::optional(carried_into(*p.pending, p.pose)) : std::nullopt;
   if (t.wide && draw.choice == SubmapChoice::kNew) t.wide->carried = p.pose;
   if (t.wide && draw.choice == SubmapChoice::kMatch) t.wide->dropped = true;
   const RangeSweep& at = sweeps_[last_update_];
@@ -212,7 +211,8 @@ void SegSlam3d::advance(SegParticle3& p, const SweepModel& s, std::mt19937_64& r
   p.pose = Pose4::level_of(after);
   std::vector<Eigen::Vector3d> world(s.ends.size());
   for (std::size_t k = 0; k < s.ends.size(); ++k) world[k] = after * s.ends[k];
-  p.log_weight += options_.filter.weight_exponent * octree_log_likelihood(p.submap.map, world, options_.filter.likelihood);
+  p.log_weight +=
+      options_.filter.weight_exponent * octree_log_likelihood(p.submap.map, world, options_.filter.likelihood);
   // A locked submap is localised in, never written (SegSLAM sec. 6): the particle keeps sharing the
   // matched submap's octree, and skips the ray insertion that dominates the 3D step.
   if (!p.submap.locked) insert_rays(p.submap.map, rays_at(after, s.rays), options_.filter.insert);
@@ -234,8 +234,8 @@ void SegSlam3d::update(std::size_t k) {
   s.imu_before = euler_of(prev.odometry.linear());
   s.imu = euler_of(now.odometry.linear());
   s.yaw_change = normalize_angle(s.imu.yaw - s.imu_before.yaw);
-  s.motion_error = motion_error_increment(Pose4::level_of(prev.odometry).between(Pose4::level_of(now.odometry)).planar(),
-                                          options_.segslam.segmentation);
+  s.motion_error = motion_error_increment(
+      Pose4::level_of(prev.odometry).between(Pose4::level_of(now.odometry)).planar(), options_.segslam.segmentation);
   const auto step = static_cast<std::size_t>(options_.filter.likelihood_ray_step);
   for (std::size_t i = 0, hits = 0; i < now.rays.size(); ++i) {
     if (now.rays[i].hit && hits++ % step == 0) s.ends.push_back(now.rays[i].end);
@@ -290,7 +290,8 @@ void SegSlam3d::update(std::size_t k) {
   // nor punished.
   double sum = 0;
   int warm_count = 0;
-  for (std::size_t i = 0; i < gain.size(); ++i) if (warm[i]) sum += gain[i], ++warm_count;
+  for (std::size_t i = 0; i < gain.size(); ++i)
+    if (warm[i]) sum += gain[i], ++warm_count;
   for (std::size_t i = 0; i < particles_.size(); ++i) {
     if (!warm[i] && warm_count > 0) particles_[i].log_weight += sum / warm_count - gain[i];
   }
@@ -367,7 +368,8 @@ void SegSlam3d::prune() {
   std::vector<std::size_t> roots;
   for (const SegParticle3& p : particles_) roots.push_back(p.submap.predecessor), roots.push_back(p.submap.parent);
   stats_.pruned += segmap_.prune(roots);
-  for (auto it = targets_.begin(); it != targets_.end();) it = segmap_.contains(it->first) ? std::next(it) : targets_.erase(it);
+  for (auto it = targets_.begin(); it != targets_.end();)
+    it = segmap_.contains(it->first) ? std::next(it) : targets_.erase(it);
 }
 
 std::size_t SegSlam3d::best_particle() const {
@@ -428,7 +430,8 @@ Pose4 SegSlam3d::estimate() const {
     c += w[m] * std::cos(g.yaw), s += w[m] * std::sin(g.yaw);
   }
   const Pose4 mean{position.x(), position.y(), position.z(), std::atan2(s, c)};
-  return mean.compose(Pose4::level_of(sweeps_[last_update_].odometry).between(Pose4::level_of(sweeps_.back().odometry)));
+  return mean.compose(
+      Pose4::level_of(sweeps_[last_update_].odometry).between(Pose4::level_of(sweeps_.back().odometry)));
 }
 
 }  // namespace lookahead::slam::segslam

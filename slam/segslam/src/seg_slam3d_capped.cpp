@@ -15,8 +15,8 @@
 #include <map>
 #include <utility>
 
-#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "localization_match3.hpp"
+#include "lookahead/slam/parallel/parallel_errors.hpp"
 #include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "seg_slam3d_transition.hpp"
 
@@ -32,7 +32,8 @@ void SegSlam3d::run_capped_stage(std::vector<Transition>& transitions, const Swe
   std::map<std::pair<std::size_t, long>, std::vector<std::size_t>> open;  // -> indices into searches
   // A request joins a search whose square, with its region, stays within this (a guess far
   // from the others would make the square, and its cost, grow).
-  const double max_square = 2 * std::max(options_.segslam.matching.max_search_radius, options_.segslam.matching.search_radius);
+  const double max_square =
+      2 * std::max(options_.segslam.matching.max_search_radius, options_.segslam.matching.search_radius);
   for (std::size_t u = 0; u < transitions.size(); ++u) {
     for (std::size_t k = 0; k < transitions[u].candidates.size(); ++k) {
       const Candidate& c = transitions[u].candidates[k];
@@ -90,7 +91,8 @@ void SegSlam3d::run_capped_search(CappedSearch& s, const SweepWindow& w) {
   ++stats_.capped_searches;
   stats_.matching_seconds += seconds;
   // The screens stay in the update's cache: a copy fitted again reads it if it is the first.
-  for (std::size_t r = 0; r < s.regions.size(); ++r) match_cache_.emplace(key_of(s.searched, s.regions[r]), s.results[r]);
+  for (std::size_t r = 0; r < s.regions.size(); ++r)
+    match_cache_.emplace(key_of(s.searched, s.regions[r]), s.results[r]);
 }
 
 }  // namespace lookahead::slam::segslam

@@ -98,7 +98,8 @@ void SegSlam3d::record(MatchAttempt3& a, std::size_t candidate, const WindowMatc
   a.wide = wide, a.modes = m.modes;
 }
 
-void SegSlam3d::apply_wide(SegParticle3& p, const WideRequest& r, WindowMatch3 m, std::vector<MatchAttempt3>& attempts) {
+void SegSlam3d::apply_wide(SegParticle3& p, const WideRequest& r, WindowMatch3 m,
+                           std::vector<MatchAttempt3>& attempts) {
   m.translation = (m.pose.position() - r.guess.position()).norm();
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, candidate_options(r.candidate)) : 0.0;
   // A wide pose farther from this particle's guess than the reach (the search started from
@@ -147,7 +148,9 @@ std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::
     if (options_.extras.record_attempts) {
       attempts.push_back(attempt_of(id, guess, d, chain[i], wide));
       const bool far = d > (wide ? wide->proximity_radius : radius);
-      attempts.back().outcome = near || near_wide ? AttemptOutcome::kNotNearest : far ? AttemptOutcome::kFar : AttemptOutcome::kUnobserved;
+      attempts.back().outcome = near || near_wide ? AttemptOutcome::kNotNearest
+                                : far             ? AttemptOutcome::kFar
+                                                  : AttemptOutcome::kUnobserved;
     }
     if (!near && !near_wide) continue;
     candidates.push_back({near_wide, wide, d, id, guess, attempts.size() - 1});
@@ -156,7 +159,8 @@ std::vector<SegSlam3d::Candidate> SegSlam3d::winnow(const SegParticle3& p, std::
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.wide_only != b.wide_only ? b.wide_only : a.distance < b.distance;
   });
-  if (candidates.size() > static_cast<std::size_t>(o.max_candidates)) candidates.resize(static_cast<std::size_t>(o.max_candidates));
+  if (candidates.size() > static_cast<std::size_t>(o.max_candidates))
+    candidates.resize(static_cast<std::size_t>(o.max_candidates));
   return candidates;
 }
 
@@ -177,7 +181,8 @@ LevelSubgrid SegSlam3d::capped_region(const Pose4& guess, const MatchingOptions&
   const auto round_to = [](double v, double s) { return static_cast<double>(std::lround(v / s)) * s; };
   return {{round_to(guess.x, step), round_to(guess.y, step), round_to(guess.z, 0.5),
            normalize_angle(round_to(guess.yaw, angle_step))},
-          reach.search_radius, reach.search_angle};
+          reach.search_radius,
+          reach.search_angle};
 }
 
 WindowMatch3 SegSlam3d::cached_match(std::size_t candidate, const Pose4& guess, const SweepWindow& w) {
@@ -236,7 +241,8 @@ MatchingOptions SegSlam3d::candidate_options(std::size_t candidate) const {
   // search widen with the SegSLAM eq. (13)-(14) error accumulated since the candidate was left, as
   // SegSLAM sec. 4.5.2 spreads the localisation filter ("candidate positions at the end of long
   // loops will be uncertain"): a fixed sigma and search miss re-entries after a long loop.
-  return candidate_reach(options_.segslam.matching, error_since(candidate), options_.segslam.matching.max_search_radius);
+  return candidate_reach(options_.segslam.matching, error_since(candidate),
+                         options_.segslam.matching.max_search_radius);
 }
 
 std::shared_ptr<const OctreeMatchTarget> SegSlam3d::target_of(std::size_t candidate) {
@@ -244,7 +250,8 @@ std::shared_ptr<const OctreeMatchTarget> SegSlam3d::target_of(std::size_t candid
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     if (auto t = targets_[candidate]) return t;
   }
-  auto t = std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
+  auto t =
+      std::make_shared<const OctreeMatchTarget>(match_target_of(segmap_.at(candidate).map, options_.segslam.matching));
   const std::lock_guard<std::mutex> lock(cache_mutex_);
   targets_[candidate] = t;
   return t;
@@ -263,19 +270,20 @@ std::optional<WindowMatch3> SegSlam3d::confirm_pending(SegParticle3& p, const Sw
   MatchingOptions o = candidate_options(pending->candidate);
   o.search_radius = 2 * options_.extras.wide.confirm_distance;
   o.search_angle = 2 * options_.extras.wide.confirm_angle;
-  WindowMatch3 m = match_window(*target_of(pending->candidate), window_with_structure(w), predicted, o,
-                                options_.extras.structure);
+  WindowMatch3 m =
+      match_window(*target_of(pending->candidate), window_with_structure(w), predicted, o, options_.extras.structure);
   m.translation = (m.pose.position() - guess.position()).norm();
   m.weight = m.ok ? match_weight(m.icp_error, m.translation, o) : 0.0;
-  if (m.ok && !confirms(predicted, m.pose, options_.extras.wide)) m.ok = false, m.weight = 0.0, m.rejection = "unconfirmed";
+  if (m.ok && !confirms(predicted, m.pose, options_.extras.wide))
+    m.ok = false, m.weight = 0.0, m.rejection = "unconfirmed";
   {
     const std::lock_guard<std::mutex> lock(cache_mutex_);
     stats_.matching_seconds += seconds_since(start);
   }
   if (options_.extras.record_attempts) {
-    MatchAttempt3 a = attempt_of(pending->candidate, guess,
-                                 distance_to_path(segmap_.at(pending->candidate), guess, options_.extras.proximity_height),
-                                 0.0, std::nullopt);
+    MatchAttempt3 a = attempt_of(
+        pending->candidate, guess,
+        distance_to_path(segmap_.at(pending->candidate), guess, options_.extras.proximity_height), 0.0, std::nullopt);
     a.outcome = m.ok ? AttemptOutcome::kOffered : AttemptOutcome::kRejected;
     a.pose = m.pose, a.rejection = m.rejection, a.confirmation = true;
     a.guess_score = m.guess_score, a.coarse_score = m.coarse_score;
@@ -293,7 +301,8 @@ double SegSlam3d::error_since(std::size_t candidate) const {
 std::optional<MatchingOptions> SegSlam3d::wide_options(double chain_error) const {
   // Deviation (wide_reentry.hpp): beyond the capped search, a second stage sized by SegSLAM eq. (18)'s
   // sigma_tau, accepted only when one pose of it passes the tests (SegSLAM eq. (19)'s covariance term).
-  return wide_reach(options_.segslam.matching, chain_error, options_.segslam.matching.max_search_radius, options_.extras.wide);
+  return wide_reach(options_.segslam.matching, chain_error, options_.segslam.matching.max_search_radius,
+                    options_.extras.wide);
 }
 
 std::vector<double> SegSlam3d::chain_errors(const std::vector<PlacedSubmap<Pose4>>& sample,
@@ -343,8 +352,8 @@ std::pair<std::size_t, Pose4> SegSlam3d::nearest_path_pose(std::size_t candidate
   return out;
 }
 
-MatchAttempt3 SegSlam3d::attempt_of(std::size_t candidate, const Pose4& guess, double path_distance,
-                                     double chain_error, const std::optional<MatchingOptions>& wide) const {
+MatchAttempt3 SegSlam3d::attempt_of(std::size_t candidate, const Pose4& guess, double path_distance, double chain_error,
+                                    const std::optional<MatchingOptions>& wide) const {
   MatchAttempt3 a;
   a.sweep = last_update_, a.candidate = candidate, a.guess = guess, a.path_distance = path_distance;
   const MatchingOptions o = candidate_options(candidate);

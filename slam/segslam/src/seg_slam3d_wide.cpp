@@ -49,7 +49,8 @@ std::vector<SegSlam3d::WideSearch> SegSlam3d::wide_searches(const std::vector<co
   for (std::size_t i = 0; i < requests.size(); ++i) {
     if (!requests[i]) continue;
     const WideRequest& r = *requests[i];
-    const std::size_t searched = options_.segslam.matching.share_by_segment ? segmap_.first_copy(r.candidate) : r.candidate;
+    const std::size_t searched =
+        options_.segslam.matching.share_by_segment ? segmap_.first_copy(r.candidate) : r.candidate;
     const WideRegion region = rounded_region(r.guess, r.options, w);
     std::vector<std::size_t>& groups = open[{searched, std::lround(region.centre.z / 0.5)}];
     // Joins the first search whose square stays within the stage's caps with it (a guess far

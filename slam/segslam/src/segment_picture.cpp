@@ -13,8 +13,14 @@ namespace lookahead::slam::segslam {
 namespace {
 
 // A palette of distinguishable colours (BGR); neighbouring submaps never share one.
-constexpr std::array<std::array<int, 3>, 8> kPalette{{{200, 60, 30}, {40, 40, 210}, {30, 150, 30}, {170, 40, 170},
-                                                      {0, 140, 230}, {150, 150, 0}, {90, 60, 140}, {20, 100, 160}}};
+constexpr std::array<std::array<int, 3>, 8> kPalette{{{200, 60, 30},
+                                                      {40, 40, 210},
+                                                      {30, 150, 30},
+                                                      {170, 40, 170},
+                                                      {0, 140, 230},
+                                                      {150, 150, 0},
+                                                      {90, 60, 140},
+                                                      {20, 100, 160}}};
 
 cv::Scalar colour(std::size_t i) {
   const auto& c = kPalette[i % kPalette.size()];
@@ -23,9 +29,8 @@ cv::Scalar colour(std::size_t i) {
 
 }  // namespace
 
-void write_segment_picture(const std::string& png_path, const ProbabilityMap& map,
-                           const std::vector<Pose2>& odometry, const SegmentedPath& path,
-                           const std::string& title) {
+void write_segment_picture(const std::string& png_path, const ProbabilityMap& map, const std::vector<Pose2>& odometry,
+                           const SegmentedPath& path, const std::string& title) {
   if (map.width == 0 || map.height == 0) throw ParseError(png_path, 0, "", "", "empty map");
   BgrImage base = render_map_picture(map, {{odometry, {230, 140, 20}, "odometry", 1}}, {}, title);
   cv::Mat img(base.height, base.width, CV_8UC3, base.pixels.data());
@@ -48,10 +53,12 @@ void write_segment_picture(const std::string& png_path, const ProbabilityMap& ma
   // Legend rows under the base legend (title, odometry, start).
   const int y0 = 4 + 18 * 5;
   cv::rectangle(img, cv::Rect(0, y0 - 14, kLegendPanelWidth, 40), cv::Scalar(255, 255, 255), cv::FILLED);
-  for (int k = 0; k < 3; ++k) cv::line(img, {10 + 10 * k, y0 - 5}, {20 + 10 * k, y0 - 5}, colour(static_cast<std::size_t>(k)), 3);
+  for (int k = 0; k < 3; ++k)
+    cv::line(img, {10 + 10 * k, y0 - 5}, {20 + 10 * k, y0 - 5}, colour(static_cast<std::size_t>(k)), 3);
   cv::putText(img, path.label, {48, y0}, cv::FONT_HERSHEY_SIMPLEX, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
   cv::putText(img, "X", {19, y0 + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.5, {0, 0, 0}, 2, cv::LINE_AA);
-  cv::putText(img, "match: re-entry into an old submap", {48, y0 + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.45, {0, 0, 0}, 1, cv::LINE_AA);
+  cv::putText(img, "match: re-entry into an old submap", {48, y0 + 18}, cv::FONT_HERSHEY_SIMPLEX, 0.45, {0, 0, 0}, 1,
+              cv::LINE_AA);
   if (!cv::imwrite(png_path, img)) throw ParseError(png_path, 0, "", "", "cannot write image");
 }
 

@@ -11,8 +11,7 @@ double motion_error_increment(const Pose2& u, const SegmentationOptions& o) {
   return o.slam_factor * (o.alpha_translation * u.norm() + o.alpha_rotation * std::abs(u.theta));
 }
 
-bool should_segment(int updates, double motion_error, double predictive_score,
-                    const SegmentationOptions& o) {
+bool should_segment(int updates, double motion_error, double predictive_score, const SegmentationOptions& o) {
   if (updates < o.min_segment_updates) return false;
   if (motion_error >= o.max_motion_error) return true;
   return predictive_score >= 0.0 && predictive_score < o.predictive_threshold;

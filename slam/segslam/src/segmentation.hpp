@@ -19,7 +19,6 @@ double motion_error_increment(const Pose2& u, const SegmentationOptions& options
 /// The criterion of SegSLAM sec. 4.3 on one particle's submap: `updates` filter updates old, with
 /// accumulated motion error `motion_error` [m] and look-ahead predictive score
 /// `predictive_score` in [0, 1] (negative: not computed).
-bool should_segment(int updates, double motion_error, double predictive_score,
-                    const SegmentationOptions& options);
+bool should_segment(int updates, double motion_error, double predictive_score, const SegmentationOptions& options);
 
 }  // namespace lookahead::slam::segslam

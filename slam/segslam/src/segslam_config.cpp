@@ -41,7 +41,8 @@ void visit_sections(SegSlamOptions& o, V&& v) {
   v("translation_sigma", m.translation_sigma, "SegSLAM eq. (18) sigma of the correction [m]");
   v("null_error", m.null_error, "the null match weighs as a match of this error [m]");
   v("min_inlier_ratio", m.min_inlier_ratio, "matches with fewer inliers are discarded");
-  v("use_localization_filter", m.use_localization_filter, "match by a localisation filter (SegSLAM eq. (19)), not ICP (eq. (18))");
+  v("use_localization_filter", m.use_localization_filter,
+    "match by a localisation filter (SegSLAM eq. (19)), not ICP (eq. (18))");
   v("localization_particles", m.localization_particles, "particles of the localisation filter");
   v("share_by_segment", m.share_by_segment, "copies of one segment share the searches that find nothing");
   auto& l = o.locking;

@@ -13,8 +13,8 @@ double match_weight(double icp_error, double translation, const MatchingOptions&
 
 double null_match_weight(const MatchingOptions& o) { return match_weight(o.null_error, 0.0, o); }
 
-ChoiceDraw draw_submap_choice(bool segment, const std::vector<double>& match_weights,
-                              const MatchingOptions& o, std::mt19937_64& rng) {
+ChoiceDraw draw_submap_choice(bool segment, const std::vector<double>& match_weights, const MatchingOptions& o,
+                              std::mt19937_64& rng) {
   const SubmapChoice null_choice = segment ? SubmapChoice::kNew : SubmapChoice::kSame;
   if (match_weights.empty()) return {null_choice, 0};
   double total = null_match_weight(o);

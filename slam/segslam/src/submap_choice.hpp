@@ -29,7 +29,7 @@ struct ChoiceDraw {
 };
 
 /// SegSLAM eq. (3): draws among the null choice (kNew when `segment` else kSame) and the matches.
-ChoiceDraw draw_submap_choice(bool segment, const std::vector<double>& match_weights,
-                              const MatchingOptions& options, std::mt19937_64& rng);
+ChoiceDraw draw_submap_choice(bool segment, const std::vector<double>& match_weights, const MatchingOptions& options,
+                              std::mt19937_64& rng);
 
 }  // namespace lookahead::slam::segslam

@@ -20,16 +20,14 @@ template <class Map, class Pose>
 std::vector<Pose> chain_frames(const std::vector<const Submap<Map, Pose>*>& chain) {
   std::vector<Pose> frames;
   for (std::size_t i = 0; i < chain.size(); ++i) {
-    frames.push_back(i == 0 ? Pose{}
-                            : frames.back().compose(chain[i - 1]->exit).compose(chain[i]->entry.inverse()));
+    frames.push_back(i == 0 ? Pose{} : frames.back().compose(chain[i - 1]->exit).compose(chain[i]->entry.inverse()));
   }
   return frames;
 }
 
 /// The submaps a particle went through, oldest first, ending with its open submap `last`.
 template <class Map, class Pose>
-std::vector<const Submap<Map, Pose>*> temporal_chain(const SegMap<Map, Pose>& segmap,
-                                                     const Submap<Map, Pose>& last) {
+std::vector<const Submap<Map, Pose>*> temporal_chain(const SegMap<Map, Pose>& segmap, const Submap<Map, Pose>& last) {
   std::vector<const Submap<Map, Pose>*> chain{&last};
   while (chain.back()->predecessor != kNoSubmap && segmap.contains(chain.back()->predecessor)) {
     chain.push_back(&segmap.at(chain.back()->predecessor));
@@ -41,8 +39,8 @@ std::vector<const Submap<Map, Pose>*> temporal_chain(const SegMap<Map, Pose>& se
 /// The poses of the chain's paths, each placed by its frame (frames[i] for chain[i]); at a
 /// switch scan the newer submap's pose is kept.
 template <class Map, class Pose>
-std::vector<std::pair<std::size_t, Pose>> reconstruct_trajectory(
-    const std::vector<const Submap<Map, Pose>*>& chain, const std::vector<Pose>& frames) {
+std::vector<std::pair<std::size_t, Pose>> reconstruct_trajectory(const std::vector<const Submap<Map, Pose>*>& chain,
+                                                                 const std::vector<Pose>& frames) {
   std::vector<std::pair<std::size_t, Pose>> out;
   for (std::size_t i = 0; i < chain.size(); ++i) {
     for (const auto& [scan, pose] : chain[i]->path) {
@@ -72,7 +70,8 @@ const Submap<Map, Pose>* frame_root(const SegMap<Map, Pose>& segmap, const Subma
 template <class Map, class Pose>
 std::vector<Pose> chain_frames_with_matches(const SegMap<Map, Pose>& segmap,
                                             const std::vector<const Submap<Map, Pose>*>& chain) {
-  std::vector<Pose> frames = chain_frames(std::vector<const Submap<Map, Pose>*>(chain.begin(), chain.begin() + (chain.empty() ? 0 : 1)));
+  std::vector<Pose> frames =
+      chain_frames(std::vector<const Submap<Map, Pose>*>(chain.begin(), chain.begin() + (chain.empty() ? 0 : 1)));
   std::vector<std::pair<const Submap<Map, Pose>*, Pose>> placed_roots;
   if (!chain.empty()) placed_roots.push_back({frame_root(segmap, *chain[0]), frames[0]});
   for (std::size_t i = 1; i < chain.size(); ++i) {

@@ -16,16 +16,16 @@ namespace lookahead::slam::segslam {
 namespace {
 
 bool same_mode(const Pose4& a, const Pose4& b, const WideReentryOptions& w) {
-  return std::hypot(a.x - b.x, a.y - b.y) <= w.separation && std::abs(normalize_angle(a.yaw - b.yaw)) <= w.angle_separation;
+  return std::hypot(a.x - b.x, a.y - b.y) <= w.separation &&
+         std::abs(normalize_angle(a.yaw - b.yaw)) <= w.angle_separation;
 }
 
 }  // namespace
 
 void validate(const WideReentryOptions& w) {
-  if (!(w.max_radius >= 0) || !(w.sigmas > 0) || !(w.angle_per_error >= 0) || !(w.max_angle >= 0) ||
-      w.peaks < 2 || !(w.separation > 0) || !(w.angle_separation > 0) || !(w.confirm_distance > 0) ||
-      !(w.confirm_angle > 0) || !(w.trigger_sigmas > 0 && w.trigger_sigmas <= w.sigmas) || !(w.guess_step > 0) ||
-      !(w.guess_angle_step > 0)) {
+  if (!(w.max_radius >= 0) || !(w.sigmas > 0) || !(w.angle_per_error >= 0) || !(w.max_angle >= 0) || w.peaks < 2 ||
+      !(w.separation > 0) || !(w.angle_separation > 0) || !(w.confirm_distance > 0) || !(w.confirm_angle > 0) ||
+      !(w.trigger_sigmas > 0 && w.trigger_sigmas <= w.sigmas) || !(w.guess_step > 0) || !(w.guess_angle_step > 0)) {
     throw std::invalid_argument(
         "segslam3d wide re-entry: max_radius >= 0, sigmas > 0, angle_per_error >= 0, max_angle >= 0, peaks >= 2, "
         "0 < trigger_sigmas <= sigmas, separation, angle_separation, confirm_distance, confirm_angle, guess_step and "
@@ -54,12 +54,14 @@ std::optional<MatchingOptions> wide_reach(const MatchingOptions& base, double er
   const double sigma_tau = std::hypot(base.translation_sigma, e);
   // Only beyond the capped search: below it the narrow stage reaches as far, and its results
   // stay as they were.
-  if (std::min(w.max_radius, w.trigger_sigmas * sigma_tau) <= std::max(narrow_cap, base.search_radius)) return std::nullopt;
+  if (std::min(w.max_radius, w.trigger_sigmas * sigma_tau) <= std::max(narrow_cap, base.search_radius))
+    return std::nullopt;
   const double reach = std::min(w.max_radius, w.sigmas * sigma_tau);
   MatchingOptions o = base;
   o.translation_sigma = sigma_tau;
   o.search_radius = reach;
-  o.search_angle = std::max(base.search_angle, std::min(w.max_angle, std::hypot(base.search_angle, w.angle_per_error * e)));
+  o.search_angle =
+      std::max(base.search_angle, std::min(w.max_angle, std::hypot(base.search_angle, w.angle_per_error * e)));
   o.proximity_radius = base.proximity_radius + (reach - base.search_radius);
   return o;
 }
@@ -90,7 +92,8 @@ WindowMatch3 unambiguous_in(const WideRegion& region, const std::vector<LevelCoa
     if (k == 0) out = m;  // what is reported when nothing passes
     if (!m.ok) continue;
     // ICP from two peaks may converge to one pose: one mode, kept once (the better fit).
-    const auto same = std::find_if(passed.begin(), passed.end(), [&](const WindowMatch3& p) { return same_mode(p.pose, m.pose, wide); });
+    const auto same = std::find_if(passed.begin(), passed.end(),
+                                   [&](const WindowMatch3& p) { return same_mode(p.pose, m.pose, wide); });
     if (same == passed.end()) {
       passed.push_back(m);
     } else if (m.icp_error < same->icp_error) {
@@ -135,7 +138,8 @@ std::vector<WindowMatch3> match_regions_unambiguous(const OctreeMatchTarget& tar
   const auto refine = [&](const Pose4& seed) -> const WindowMatch3& {
     return refined.at(std::make_tuple(seed.x, seed.y, seed.z, seed.yaw));
   };
-  for (std::size_t r = 0; r < regions.size(); ++r) out[r] = unambiguous_in(regions[r], peaks[r], refine, target, window, o, wide);
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    out[r] = unambiguous_in(regions[r], peaks[r], refine, target, window, o, wide);
   return out;
 }
 

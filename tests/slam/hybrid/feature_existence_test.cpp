@@ -35,21 +35,21 @@ TEST(FeatureExistence, ClampKeepsTheCleanSensorFinite) {
 // Sec. 3.1: the weighted majority wins and every particle's landmark takes its gamma.
 TEST(CorrespondenceVote, WeightedMajorityOverwritesGamma) {
   std::vector<Particle> p(3);
-  for (auto& q : p) q.landmarks = {{{0, 0}, Eigen::Matrix2d::Identity(), 0.9, 5}, {{1, 0}, Eigen::Matrix2d::Identity(), 0.9, 6}};
+  for (auto& q : p)
+    q.landmarks = {{{0, 0}, Eigen::Matrix2d::Identity(), 0.9, 5}, {{1, 0}, Eigen::Matrix2d::Identity(), 0.9, 6}};
   p[0].weight = 0.5;  // associates with its landmark 0 (gamma 5)
   p[1].weight = 0.3;  // associates with its landmark 1 (gamma 6)
   p[2].weight = 0.2;  // creates a landmark
   p[2].landmarks.push_back({{2, 0}, Eigen::Matrix2d::Identity(), 0.5, -1});
-  std::vector<std::vector<Decision>> d = {{{Decision::Kind::kAssociated, 0}},
-                                          {{Decision::Kind::kAssociated, 1}},
-                                          {{Decision::Kind::kCreated, 2}}};
+  std::vector<std::vector<Decision>> d = {
+      {{Decision::Kind::kAssociated, 0}}, {{Decision::Kind::kAssociated, 1}}, {{Decision::Kind::kCreated, 2}}};
   long next = 100;
   const std::vector<long> won = vote_correspondences(p, d, next);
   ASSERT_EQ(won.size(), 1u);
   EXPECT_EQ(won[0], 5);
   EXPECT_EQ(p[1].landmarks[1].id, 5);  // overwritten: the minority now agrees
   EXPECT_EQ(p[2].landmarks[2].id, 5);
-  EXPECT_EQ(next, 100);                // no new identity was needed
+  EXPECT_EQ(next, 100);  // no new identity was needed
   // With the weights turned around, "new" wins and all three share a fresh identity.
   p[0].weight = 0.2, p[2].weight = 0.5;
   vote_correspondences(p, d, next);

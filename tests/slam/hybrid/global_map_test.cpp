@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/hybrid/global_map.hpp"
-#include "lookahead/slam/hybrid/motion_step.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+
+#include "lookahead/slam/hybrid/motion_step.hpp"
 
 namespace lookahead::slam::hybrid {
 namespace {
@@ -59,8 +60,8 @@ TEST(GlobalMapAugmentation, CovarianceFollowsThePaper) {
   local.existence = {1.0};
   g.augment(local);
   const LocalToGlobal lg = local_to_global(v, local.mean);
-  const Eigen::MatrixXd expected_new = lg.d_origin * p0 * lg.d_origin.transpose() +
-                                       lg.d_local * local.covariance * lg.d_local.transpose();
+  const Eigen::MatrixXd expected_new =
+      lg.d_origin * p0 * lg.d_origin.transpose() + lg.d_local * local.covariance * lg.d_local.transpose();
   EXPECT_LT((g.covariance().bottomRightCorner(5, 5) - expected_new).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_LT((g.covariance().bottomLeftCorner(5, 3) - lg.d_origin * p0).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_LT((g.mean().tail(5) - lg.value).cwiseAbs().maxCoeff(), 1e-12);

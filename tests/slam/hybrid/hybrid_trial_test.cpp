@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: MIT
-#include "lookahead/slam/hybrid/trial.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "lookahead/slam/hybrid/study.hpp"
+#include "lookahead/slam/hybrid/trial.hpp"
 
 namespace lookahead::slam::hybrid {
 namespace {
@@ -93,7 +92,8 @@ TEST(Simulation, SensorMatchesTheClutterModel) {
     clean_z += s.observations.size();
     EXPECT_EQ(static_cast<int>(s.observations.size()), s.true_detections);  // no clutter
   }
-  for (const auto& s : cluttered.steps) detections += static_cast<std::size_t>(s.true_detections), all += s.observations.size();
+  for (const auto& s : cluttered.steps)
+    detections += static_cast<std::size_t>(s.true_detections), all += s.observations.size();
   // alpha = 0.4 of the visible features, plus beta = 0.06 false alarms per visible feature.
   const double visible = static_cast<double>(clean_z) / static_cast<double>(clean_run.steps.size());
   const double steps = static_cast<double>(cluttered.steps.size());

@@ -42,7 +42,7 @@ GaussianMap local_map(const Pose2& origin, const Pose2& vehicle, const std::vect
 
 struct Scene {
   Pose2 start{1.0, 2.0, 0.5};
-  std::vector<Pose2> poses;                       // v_1 ... v_3
+  std::vector<Pose2> poses;  // v_1 ... v_3
   std::vector<Eigen::Vector2d> features = {{5.0, 4.0}, {7.0, 1.0}, {3.0, 8.0}, {8.0, 7.0}};
   std::vector<std::vector<int>> seen = {{0, 1}, {1, 2, 3}, {3, 2, 0}};  // map 3 closes a loop on feature 0
   Scene() {
@@ -87,7 +87,9 @@ TEST(MapJoining, EqualsTheEkfFusionWhenEveryLinearisationPointIsExact) {
 // MapJoining with Pose2 algebra: x = [v_1 .. v_K, features].
 double joint_cost(const Eigen::VectorXd& x, const Pose2& start, const std::vector<GaussianMap>& maps,
                   const std::vector<std::vector<int>>& seen) {
-  const auto pose = [&](std::size_t k) { return k == 0 ? start : Pose2{x(3 * (k - 1)), x(3 * (k - 1) + 1), x(3 * (k - 1) + 2)}; };
+  const auto pose = [&](std::size_t k) {
+    return k == 0 ? start : Pose2{x(3 * (k - 1)), x(3 * (k - 1) + 1), x(3 * (k - 1) + 2)};
+  };
   const Eigen::Index first_feature = 3 * static_cast<Eigen::Index>(maps.size());
   double cost = 0.0;
   for (std::size_t k = 0; k < maps.size(); ++k) {
@@ -97,7 +99,8 @@ double joint_cost(const Eigen::VectorXd& x, const Pose2& start, const std::vecto
     r.head<3>() << v.x - m.mean(0), v.y - m.mean(1), normalize_angle(v.theta - m.mean(2));
     for (std::size_t i = 0; i < seen[k].size(); ++i) {
       const Eigen::Vector2d f = x.segment<2>(first_feature + 2 * seen[k][i]);
-      r.segment<2>(3 + 2 * static_cast<Eigen::Index>(i)) = seen_from(pose(k), f) - m.mean.segment<2>(3 + 2 * static_cast<Eigen::Index>(i));
+      r.segment<2>(3 + 2 * static_cast<Eigen::Index>(i)) =
+          seen_from(pose(k), f) - m.mean.segment<2>(3 + 2 * static_cast<Eigen::Index>(i));
     }
     cost += r.dot(m.covariance.ldlt().solve(r));
   }
@@ -133,15 +136,18 @@ TEST(MapJoining, ReachesTheLeastSquaresOptimumOfAllLocalMaps) {
   }
   // The test's cost indexes features by scene number; map them from the solver's order.
   Eigen::VectorXd x(3 * 3 + 2 * 4);
-  for (std::size_t k = 1; k <= 3; ++k) x.segment<3>(3 * static_cast<Eigen::Index>(k - 1)) << joining.pose(k).x, joining.pose(k).y, joining.pose(k).theta;
-  for (std::size_t f = 0; f < 4; ++f) x.segment<2>(9 + 2 * static_cast<Eigen::Index>(f)) = joining.feature(static_cast<std::size_t>(global_of[f]));
+  for (std::size_t k = 1; k <= 3; ++k)
+    x.segment<3>(3 * static_cast<Eigen::Index>(k - 1)) << joining.pose(k).x, joining.pose(k).y, joining.pose(k).theta;
+  for (std::size_t f = 0; f < 4; ++f)
+    x.segment<2>(9 + 2 * static_cast<Eigen::Index>(f)) = joining.feature(static_cast<std::size_t>(global_of[f]));
   const double at_optimum = joint_cost(x, scene.start, maps, scene.seen);
   constexpr double h = 1e-5;
   for (Eigen::Index i = 0; i < x.size(); ++i) {
     Eigen::VectorXd plus = x, minus = x;
     plus(i) += h;
     minus(i) -= h;
-    const double gradient = (joint_cost(plus, scene.start, maps, scene.seen) - joint_cost(minus, scene.start, maps, scene.seen)) / (2 * h);
+    const double gradient =
+        (joint_cost(plus, scene.start, maps, scene.seen) - joint_cost(minus, scene.start, maps, scene.seen)) / (2 * h);
     EXPECT_LT(std::abs(gradient), 1e-4) << "variable " << i;
   }
   // The EKF's own answer for the newest origin is not the optimum here.
@@ -149,7 +155,6 @@ TEST(MapJoining, ReachesTheLeastSquaresOptimumOfAllLocalMaps) {
   ekf_x.segment<3>(6) << ekf.origin().x, ekf.origin().y, ekf.origin().theta;
   EXPECT_GT(joint_cost(ekf_x, scene.start, maps, scene.seen), at_optimum);
 }
-
 
 // Monte Carlo: a chain of local maps along an arc, each drawn from its own Gaussian around
 // the truth (so every local map is consistent by construction) with 0.05 rad of heading

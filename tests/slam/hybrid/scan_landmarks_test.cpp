@@ -90,8 +90,8 @@ TEST(ScanLandmarks, ObservationCarriesTheCovariance) {
   const RangeBearing z = to_observation(l);
   EXPECT_NEAR(z.range, 10.0, 1e-12);
   EXPECT_NEAR(z.bearing, M_PI / 2, 1e-12);
-  EXPECT_NEAR(z.noise(0, 0), 0.0025, 1e-12);                // along the beam: 5 cm
-  EXPECT_NEAR(z.noise(1, 1), 0.0025 / 100.0, 1e-12);        // across: 5 cm at 10 m
+  EXPECT_NEAR(z.noise(0, 0), 0.0025, 1e-12);          // along the beam: 5 cm
+  EXPECT_NEAR(z.noise(1, 1), 0.0025 / 100.0, 1e-12);  // across: 5 cm at 10 m
 }
 
 }  // namespace

@@ -35,10 +35,8 @@ TEST(GarageWorld, HasTwoDecksAndAClosedLoop) {
 }
 
 TEST(GarageWorld, SameSeedSameCars) {
-  EXPECT_EQ(make_garage_world(5, 0.2).map.known_voxels(),
-            make_garage_world(5, 0.2).map.known_voxels());
-  EXPECT_NE(make_garage_world(5, 0.2).map.known_voxels(),
-            make_garage_world(6, 0.2).map.known_voxels());
+  EXPECT_EQ(make_garage_world(5, 0.2).map.known_voxels(), make_garage_world(5, 0.2).map.known_voxels());
+  EXPECT_NE(make_garage_world(5, 0.2).map.known_voxels(), make_garage_world(6, 0.2).map.known_voxels());
 }
 
 TEST(CaveCrawlerSim, SameSeedSameLogOtherSeedOtherNoise) {
@@ -64,8 +62,7 @@ TEST(CaveCrawlerSim, TruthIsOnTheRouteAndDeadReckoningDriftsWithTheYawBias) {
   const RangeLog3 log = simulate_cave_crawler(w, o, 1);
   const Pose3& truth = *log.sweeps.back().truth;
   EXPECT_NEAR(truth.translation().y(), 7.0, 1e-9);
-  const double yaw_error =
-      euler_of(log.sweeps.back().odometry.linear()).yaw - euler_of(truth.linear()).yaw;
+  const double yaw_error = euler_of(log.sweeps.back().odometry.linear()).yaw - euler_of(truth.linear()).yaw;
   EXPECT_NEAR(yaw_error, 0.01 * log.sweeps.back().time, 1e-6);
 }
 

@@ -82,7 +82,7 @@ TEST(EvidenceOctree, VoxelsNotSharedWithTheBaseAreThoseOfWrittenBricks) {
   EvidenceOctree child = parent;
   int visited = 0;
   child.for_each_voxel_not_shared_with(parent, [&](const OctreeKey&, float, std::optional<float>) { ++visited; });
-  EXPECT_EQ(visited, 0);  // an unwritten copy shares everything
+  EXPECT_EQ(visited, 0);                // an unwritten copy shares everything
   child.update(key(0, 0, 0), false);    // a voxel the parent knew (brick 0)
   child.update(key(1, 0, 0), true);     // one it did not, same brick
   child.update(key(9000, 5, 5), true);  // one in a brick the parent never had

@@ -12,14 +12,12 @@
 namespace lookahead::slam {
 namespace {
 
-const std::string kGeb079 =
-    std::string(LOOKAHEAD_SOURCE_DIR) + "/../shared/data/3d/octomap_share_data/geb079.bt";
+const std::string kGeb079 = std::string(LOOKAHEAD_SOURCE_DIR) + "/../shared/data/3d/octomap_share_data/geb079.bt";
 
 TEST(OctreeIo, BinaryRoundTripKeepsTheClassification) {
   EvidenceOctree map;
   for (int i = 0; i < 300; ++i) {
-    const OctreeKey k{static_cast<std::uint16_t>(32700 + i % 37),
-                      static_cast<std::uint16_t>(32768 + i / 37), 32768};
+    const OctreeKey k{static_cast<std::uint16_t>(32700 + i % 37), static_cast<std::uint16_t>(32768 + i / 37), 32768};
     map.update(k, i % 3 == 0);
   }
   test::TempPath file(".bt");

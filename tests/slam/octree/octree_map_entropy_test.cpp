@@ -17,7 +17,7 @@ TEST(OctreeMapEntropy, SumsTheBinaryEntropyOfObservedVoxelsTimesTheVoxelVolume) 
   EXPECT_NEAR(voxel_entropy(2.0), voxel_entropy(-2.0), 1e-12);
   EXPECT_LT(voxel_entropy(3.5), voxel_entropy(0.85));
   EXPECT_EQ(voxel_entropy(800.0), 0.0);
-  EvidenceOctree map;  // 0.2 m voxels
+  EvidenceOctree map;                       // 0.2 m voxels
   EXPECT_EQ(octree_map_entropy(map), 0.0);  // unobserved space carries no entropy
   const OctreeGrid& g = map.grid();
   map.set_log_odds(*g.key_of({1.0, 0.0, 0.0}), 0.0F);

@@ -7,9 +7,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <random>
 #include <set>
 #include <tuple>
-#include <random>
 
 namespace lookahead::slam {
 namespace {
@@ -41,13 +41,11 @@ TEST(RayInsertion, AgreesWithOctoMapInsertPointCloud) {
     insert_rays(ours, scan, options);
     octomap::Pointcloud cloud;
     for (const Ray3& r : scan)
-      cloud.push_back(static_cast<float>(r.end.x()), static_cast<float>(r.end.y()),
-                      static_cast<float>(r.end.z()));
+      cloud.push_back(static_cast<float>(r.end.x()), static_cast<float>(r.end.y()), static_cast<float>(r.end.z()));
     const Eigen::Vector3d& o = scan.front().origin;
-    ref.insertPointCloud(cloud,
-                         octomap::point3d(static_cast<float>(o.x()), static_cast<float>(o.y()),
-                                          static_cast<float>(o.z())),
-                         options.max_range);
+    ref.insertPointCloud(
+        cloud, octomap::point3d(static_cast<float>(o.x()), static_cast<float>(o.y()), static_cast<float>(o.z())),
+        options.max_range);
   }
   // Compare the classification of every voxel either map knows.
   std::size_t both = 0, agree = 0, only_ours = 0, only_ref = 0;
@@ -65,8 +63,8 @@ TEST(RayInsertion, AgreesWithOctoMapInsertPointCloud) {
     if (!ours.log_odds({k[0], k[1], k[2]})) ++only_ref;
   }
   const double known = static_cast<double>(both + only_ours + only_ref);
-  std::printf("voxels known to both %zu, same class %zu, only ours %zu, only OctoMap %zu\n", both,
-              agree, only_ours, only_ref);
+  std::printf("voxels known to both %zu, same class %zu, only ours %zu, only OctoMap %zu\n", both, agree, only_ours,
+              only_ref);
   // Tolerance: our DDA and OctoMap's differ only where a beam passes within rounding of a
   // voxel corner, so a handful of voxels per thousand may differ.
   EXPECT_GT(both, 10000U);
@@ -94,14 +92,12 @@ TEST(RayInsertion, LongBeamsClearOnlyUpToMaxRange) {
 TEST(RayInsertion, OccupiedWinsOverFreeInOneBatch) {
   EvidenceOctree map;
   // The first beam ends where the second passes: the voxel is occupied, with one hit.
-  insert_rays(map,
-              {{{0.1, 0.1, 0.1}, {2.1, 0.1, 0.1}, true}, {{0.1, 0.1, 0.1}, {4.1, 0.1, 0.1}, true}},
+  insert_rays(map, {{{0.1, 0.1, 0.1}, {2.1, 0.1, 0.1}, true}, {{0.1, 0.1, 0.1}, {4.1, 0.1, 0.1}, true}},
               RayInsertOptions{});
   const auto l = map.log_odds(*map.grid().key_of({2.1, 0.1, 0.1}));
   ASSERT_TRUE(l);
   EXPECT_FLOAT_EQ(*l, static_cast<float>(map.options().log_odds_hit));
-  EXPECT_FLOAT_EQ(*map.log_odds(*map.grid().key_of({1.0, 0.1, 0.1})),
-                  static_cast<float>(map.options().log_odds_miss));
+  EXPECT_FLOAT_EQ(*map.log_odds(*map.grid().key_of({1.0, 0.1, 0.1})), static_cast<float>(map.options().log_odds_miss));
 }
 
 // Phase one against a plain reference (std::set of the traced and end voxels): each voxel

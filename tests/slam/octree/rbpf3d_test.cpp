@@ -59,8 +59,7 @@ TEST(Rbpf3d, ResampledParticlesShareTheirMaps) {
   std::printf("6 maps: %zu bytes alone, %zu stored\n", full, EvidenceOctree::distinct_bytes(maps));
   // Each map was written by its last sweep after the last resampling; on this 21 m map a
   // sweep touches a good part of it, so the bound is loose (the full loop shares 11x).
-  EXPECT_LT(static_cast<double>(EvidenceOctree::distinct_bytes(maps)),
-            0.75 * static_cast<double>(full));
+  EXPECT_LT(static_cast<double>(EvidenceOctree::distinct_bytes(maps)), 0.75 * static_cast<double>(full));
 }
 
 // config/slam3d/default.yaml documents the defaults: it must say exactly what the code does.

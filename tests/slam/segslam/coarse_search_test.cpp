@@ -19,7 +19,8 @@ namespace {
 OccupancyGrid room_map() {
   const auto world = test::room_world();
   OccupancyGrid map;
-  for (double x = 1.5; x < 8.5; x += 0.5) insert_scan(map, {x, 1.0, 0}, test::simulate_scan(world, {x, 1.0, 0}, {}), {});
+  for (double x = 1.5; x < 8.5; x += 0.5)
+    insert_scan(map, {x, 1.0, 0}, test::simulate_scan(world, {x, 1.0, 0}, {}), {});
   return map;
 }
 

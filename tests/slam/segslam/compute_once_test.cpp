@@ -22,11 +22,14 @@ TEST(ComputeOnce, ConcurrentAsksForOneKeyMakeItOnce) {
   for (int t = 0; t < 8; ++t) {
     threads.emplace_back([&, t] {
       bool computed = false;
-      got[static_cast<std::size_t>(t)] = compute_once(cache, mutex, 7, [&] {
-        ++makes;
-        std::this_thread::sleep_for(std::chrono::milliseconds(30));  // others arrive meanwhile
-        return 42;
-      }, &computed);
+      got[static_cast<std::size_t>(t)] = compute_once(
+          cache, mutex, 7,
+          [&] {
+            ++makes;
+            std::this_thread::sleep_for(std::chrono::milliseconds(30));  // others arrive meanwhile
+            return 42;
+          },
+          &computed);
       made_here += computed;
     });
   }

@@ -19,9 +19,9 @@ namespace lookahead::slam::segslam {
 namespace {
 
 struct Scene {
-  EvidenceOctree map;   // sweeps 5-12 of a short garage drive, true poses
-  SweepWindow window;   // sweeps 8-11 in the true level frame of sweep 8
-  Pose4 truth;          // the robot at sweep 8
+  EvidenceOctree map;  // sweeps 5-12 of a short garage drive, true poses
+  SweepWindow window;  // sweeps 8-11 in the true level frame of sweep 8
+  Pose4 truth;         // the robot at sweep 8
 };
 
 const Scene& scene() {
@@ -64,7 +64,8 @@ std::vector<Scored> greedy_peaks(const std::vector<Scored>& all, const LevelPose
     const Scored* best = nullptr;
     for (const Scored& c : all) {
       const bool apart = std::all_of(out.begin(), out.end(), [&](const Scored& e) {
-        return std::hypot(c.i - e.i, c.j - e.j) * g.step > separation || std::abs(c.a - e.a) * g.angle_step > angle_separation;
+        return std::hypot(c.i - e.i, c.j - e.j) * g.step > separation ||
+               std::abs(c.a - e.a) * g.angle_step > angle_separation;
       });
       if (apart && c.score > (best ? best->score : 0)) best = &c;
     }
@@ -123,9 +124,9 @@ TEST(NearOccupiedField, BoundLevelsHoldWhetherAnyVoxelOfTheirBoxIsNearInThePlane
   EXPECT_GT(near, 1000);
   // Level 0 is the point test.
   const Eigen::Vector3d p = s.truth.position() + Eigen::Vector3d(1.3, -0.7, -0.4);
-  EXPECT_EQ(field.near_in_plane(0, grid.axis_key(p.x()), grid.axis_key(p.y()), grid.axis_key(p.z())), field.near_in_plane(p));
+  EXPECT_EQ(field.near_in_plane(0, grid.axis_key(p.x()), grid.axis_key(p.y()), grid.axis_key(p.z())),
+            field.near_in_plane(p));
 }
-
 
 // The peaks of the wide re-entry search (its passes share their block scores) against their
 // definition by brute force: every grid pose scored, then greedily the best (ties to the first
@@ -144,7 +145,8 @@ TEST(LevelCoarseSearch, PeaksAreTheGreedyExhaustivePeaksBitForBit) {
     for (int a = -na; a <= na; ++a) {
       for (int i = -n; i <= n; ++i) {
         for (int j = -n; j <= n; ++j) {
-          const Pose4 p{guess.x + i * g.step, guess.y + j * g.step, guess.z, normalize_angle(guess.yaw + a * g.angle_step)};
+          const Pose4 p{guess.x + i * g.step, guess.y + j * g.step, guess.z,
+                        normalize_angle(guess.yaw + a * g.angle_step)};
           all.push_back({a, i, j, near_in_plane_count(field, p, s.window.scored)});
         }
       }
@@ -173,7 +175,8 @@ TEST(LevelCoarseSearch, PeaksWithinPartsAreEachPartsOwnGreedyPeaks) {
   const std::vector<LevelSubgrid> parts{{guess.compose({-1.2, 0.6, 0.0, 0.0}), 1.8, 0.2},
                                         {guess.compose({1.5, -0.9, 0.0, 0.1}), 2.1, 0.15},
                                         {guess, g.radius, g.angle}};
-  const auto found = level_search_peaks_within(field, s.window.scored, guess, g, parts, 4, separation, angle_separation);
+  const auto found =
+      level_search_peaks_within(field, s.window.scored, guess, g, parts, 4, separation, angle_separation);
   ASSERT_EQ(found.size(), parts.size());
   const int n = static_cast<int>(g.radius / g.step), na = static_cast<int>(g.angle / g.angle_step);
   for (std::size_t k = 0; k < parts.size(); ++k) {
@@ -182,8 +185,10 @@ TEST(LevelCoarseSearch, PeaksWithinPartsAreEachPartsOwnGreedyPeaks) {
     for (int a = -na; a <= na; ++a) {
       for (int i = -n; i <= n; ++i) {
         for (int j = -n; j <= n; ++j) {
-          const Pose4 p{guess.x + i * g.step, guess.y + j * g.step, guess.z, normalize_angle(guess.yaw + a * g.angle_step)};
-          if (std::abs(p.x - part.centre.x) > part.radius + 1e-9 || std::abs(p.y - part.centre.y) > part.radius + 1e-9 ||
+          const Pose4 p{guess.x + i * g.step, guess.y + j * g.step, guess.z,
+                        normalize_angle(guess.yaw + a * g.angle_step)};
+          if (std::abs(p.x - part.centre.x) > part.radius + 1e-9 ||
+              std::abs(p.y - part.centre.y) > part.radius + 1e-9 ||
               std::abs(normalize_angle(p.yaw - part.centre.yaw)) > part.angle + 1e-9) {
             continue;
           }
@@ -208,4 +213,3 @@ TEST(LevelCoarseSearch, PeaksWithinPartsAreEachPartsOwnGreedyPeaks) {
 
 }  // namespace
 }  // namespace lookahead::slam::segslam
-

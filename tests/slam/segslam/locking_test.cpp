@@ -42,7 +42,9 @@ TEST(SegMapMerge, ChildEvidenceGoesToTheParentAndTheChildDropsItsMap) {
   const std::size_t b = m.add(toy(10, 20, {7}, a));
   const std::size_t c = m.add(toy(20, 30, {1, 2, 3}, b, a));  // re-entry of a that saw cell 3
   ASSERT_EQ(m.map_count(), 3u);
-  const auto add = [](CellSet& into, const CellSet& child) { into.cells.insert(child.cells.begin(), child.cells.end()); };
+  const auto add = [](CellSet& into, const CellSet& child) {
+    into.cells.insert(child.cells.begin(), child.cells.end());
+  };
   EXPECT_FALSE(m.merge_into_parent(b, add));  // no parent: nothing to merge into
   ASSERT_TRUE(m.merge_into_parent(c, add));
   EXPECT_EQ(m.map_count(), 2u);
@@ -76,13 +78,14 @@ TEST(GridMerge, ParentGainsTheChildsNewCellsAndKeepsItsOwn) {
         child_revised += child.raw_log_odds(c) != before.raw_log_odds(c);
       } else if (child.is_known(c)) {
         ++new_cells;
-        new_cells_differing += parent.raw_log_odds(c) != child.raw_log_odds(c) || parent.is_obstacle(c) != child.is_obstacle(c);
+        new_cells_differing +=
+            parent.raw_log_odds(c) != child.raw_log_odds(c) || parent.is_obstacle(c) != child.is_obstacle(c);
       }
     }
   }
   EXPECT_GT(new_cells, 100);
   EXPECT_EQ(new_cells_differing, 0);
-  EXPECT_GT(child_revised, 0);  // the child did write cells the parent knew ...
+  EXPECT_GT(child_revised, 0);        // the child did write cells the parent knew ...
   EXPECT_EQ(known_cells_changed, 0);  // ... and the parent kept its own evidence there
   // The distance field follows the new obstacles.
   for (int y = lo.y; y <= hi.y; ++y) {

@@ -40,16 +40,18 @@ TEST(Pose4, ComposeInverseAndBetweenAreConsistent) {
 }
 
 TEST(PointIcp3, RecoversAKnownOffsetOfTheSameCloud) {
-  const Points3 target = bin_points3([] {
-    Points3 p;  // a room corner with a floor, two walls and a pillar
-    for (double a = 0; a < 6; a += 0.05) {
-      for (double b = 0; b < 3; b += 0.05) {
-        p.emplace_back(a, b * 2, 0.0), p.emplace_back(a, 0.0, b), p.emplace_back(0.0, a, b);
-        p.emplace_back(3.0 + 0.1 * std::cos(a), 2.0 + 0.1 * std::sin(a), b);
-      }
-    }
-    return p;
-  }(), 0.1);
+  const Points3 target = bin_points3(
+      [] {
+        Points3 p;  // a room corner with a floor, two walls and a pillar
+        for (double a = 0; a < 6; a += 0.05) {
+          for (double b = 0; b < 3; b += 0.05) {
+            p.emplace_back(a, b * 2, 0.0), p.emplace_back(a, 0.0, b), p.emplace_back(0.0, a, b);
+            p.emplace_back(3.0 + 0.1 * std::cos(a), 2.0 + 0.1 * std::sin(a), b);
+          }
+        }
+        return p;
+      }(),
+      0.1);
   const Pose4 truth{0.25, -0.15, 0.08, 0.06};
   Points3 source;
   for (const auto& q : target) source.push_back(truth.inverse().level_pose3() * q);
@@ -154,8 +156,8 @@ TEST(OctreeSubmapOps, PredictiveScoreDropsWhenTheWindowLeavesTheSubmap) {
   const RangeLog3& log = garage_log();
   const EvidenceOctree map = map_of(log, 0, 4);
   const double here = predictive_score(map, Pose4::level_of(*log.sweeps[2].truth), window_of(log, 2, 4));
-  const double wrong = predictive_score(map, Pose4::level_of(*log.sweeps[2].truth).compose({0, 0, 1.5, 1.0}),
-                                        window_of(log, 2, 4));
+  const double wrong =
+      predictive_score(map, Pose4::level_of(*log.sweeps[2].truth).compose({0, 0, 1.5, 1.0}), window_of(log, 2, 4));
   EXPECT_GT(here, 0.8);
   EXPECT_LT(wrong, here - 0.3);
   EXPECT_TRUE(has_observed_near(map, log.sweeps[2].truth->translation(), 1.0));
@@ -191,7 +193,8 @@ TEST(OctreeSubmapOps, AGuessBeyondTheFixedSearchIsReachedWhenTheSearchWidens) {
   const Pose4 truth = Pose4::level_of(*log.sweeps[8].truth);
   const Pose4 guess = truth.compose({4.0, -3.0, 0.2, 0.1});
   const auto right = [&](const WindowMatch3& m) {
-    return m.ok && (m.pose.position() - truth.position()).norm() < 0.1 && std::abs(normalize_angle(m.pose.yaw - truth.yaw)) < 0.02;
+    return m.ok && (m.pose.position() - truth.position()).norm() < 0.1 &&
+           std::abs(normalize_angle(m.pose.yaw - truth.yaw)) < 0.02;
   };
   const MatchingOptions fixed = segslam3d_defaults().matching;
   EXPECT_FALSE(right(match_window(target, w, guess, fixed)));
@@ -208,7 +211,8 @@ TEST(OctreeSubmapOps, AGuessBeyondTheFixedSearchIsReachedWhenTheSearchWidens) {
 TEST(NearOccupiedField, TheCoarseSearchsTestToleratesHeightErrorsTheStructureTestDoesNot) {
   EvidenceOctree map;
   for (double x = 0.1; x < 2.0; x += 0.2) {
-    for (double y = 0.1; y < 2.0; y += 0.2) map.update(*map.grid().key_of({x, y, 0.1}), true), map.update(*map.grid().key_of({x, y, 0.1}), true);
+    for (double y = 0.1; y < 2.0; y += 0.2)
+      map.update(*map.grid().key_of({x, y, 0.1}), true), map.update(*map.grid().key_of({x, y, 0.1}), true);
   }
   const NearOccupiedField field(map);
   EXPECT_TRUE(field.near({1.0, 1.0, 0.3}) && field.near_in_plane({1.0, 1.0, 0.3}));

@@ -55,7 +55,7 @@ TEST(TrajectoryReconstruction, MatchTakesTheParentsFrame) {
   M m;
   const std::size_t a = m.add(submap(0, 10, {0, 0, 0}, {5, 0, 0}));
   const std::size_t b = m.add(submap(10, 20, {}, {0.3, 0.2, 0.1}, a));  // drifted return
-  S c = submap(20, 30, {0.1, 0.0, 0.0}, {0.2, 0, 0}, b, a);  // matched into a at (0.1, 0)
+  S c = submap(20, 30, {0.1, 0.0, 0.0}, {0.2, 0, 0}, b, a);             // matched into a at (0.1, 0)
   const auto chain = temporal_chain(m, c);
   const auto frames = chain_frames_with_matches(m, chain);
   expect_pose(frames[2], frames[0]);
@@ -113,9 +113,9 @@ namespace {
 TEST(SegMapFirstCopy, SameIntervalAndParentChainOnly) {
   M m;
   const std::size_t a0 = m.add(submap(0, 10, {}, {1, 0, 0}));
-  const std::size_t a1 = m.add(submap(0, 10, {}, {1.1, 0, 0}));   // another particle's copy
-  const std::size_t b0 = m.add(submap(10, 20, {}, {1, 0, 0}, a0));  // fresh, after a0
-  const std::size_t b1 = m.add(submap(10, 20, {}, {1, 0, 0}, a1));  // fresh, after a1
+  const std::size_t a1 = m.add(submap(0, 10, {}, {1.1, 0, 0}));         // another particle's copy
+  const std::size_t b0 = m.add(submap(10, 20, {}, {1, 0, 0}, a0));      // fresh, after a0
+  const std::size_t b1 = m.add(submap(10, 20, {}, {1, 0, 0}, a1));      // fresh, after a1
   const std::size_t c0 = m.add(submap(10, 20, {}, {1, 0, 0}, a0, a0));  // re-entered a0
   const std::size_t c1 = m.add(submap(10, 20, {}, {1, 0, 0}, a1, a1));  // re-entered a0's copy
   const std::size_t d = m.add(submap(10, 21, {}, {1, 0, 0}, a1));       // another interval

@@ -125,17 +125,20 @@ TEST(SegSlam3dLocking, LockedParticlesWriteNothingReentriesMergeAndMapsStopGrowi
     filter.add_sweep(s);
     for (const SegParticle3& p : filter.particles()) {
       if (!p.submap.locked) continue;
-      const auto it = at_lock.emplace(std::make_pair(p.submap.interval.first_scan, p.submap.parent), p.submap.map).first;
-      p.submap.map.for_each_voxel_not_shared_with(it->second, [&](const OctreeKey&, float, std::optional<float>) { ++unshared; });
+      const auto it =
+          at_lock.emplace(std::make_pair(p.submap.interval.first_scan, p.submap.parent), p.submap.map).first;
+      p.submap.map.for_each_voxel_not_shared_with(it->second,
+                                                  [&](const OctreeKey&, float, std::optional<float>) { ++unshared; });
       ++locked_steps;
     }
   }
   filter.finish();
   const SegSlam3dStatistics& st = filter.statistics();
   const OctreeSegMap& segmap = filter.segmap();
-  std::printf("%zu sweeps: %zu matches, %zu locked (%zu locked particle steps), %zu merged; %zu of %zu submaps hold maps\n",
-              aisle_back_and_forth().sweeps.size(), st.matches, st.locked, st.locked_updates, st.merged,
-              segmap.map_count(), segmap.live_count());
+  std::printf(
+      "%zu sweeps: %zu matches, %zu locked (%zu locked particle steps), %zu merged; %zu of %zu submaps hold maps\n",
+      aisle_back_and_forth().sweeps.size(), st.matches, st.locked, st.locked_updates, st.merged, segmap.map_count(),
+      segmap.live_count());
   EXPECT_GT(st.locked, 0U);
   EXPECT_GT(locked_steps, 10U);
   EXPECT_EQ(unshared, 0U);  // no locked octree was written
@@ -168,7 +171,6 @@ TEST(SegSlam3dLocking, LockedParticlesWriteNothingReentriesMergeAndMapsStopGrowi
   EXPECT_EQ(off.segmap().map_count(), off.segmap().live_count());
   EXPECT_LT(segmap.map_count(), off.segmap().map_count());
 }
-
 
 }  // namespace
 }  // namespace lookahead::slam::segslam

@@ -58,7 +58,8 @@ TEST(SegSlam3d, ShortGarageSegmentSegmentsAndStaysNearTheTruth) {
   ASSERT_EQ(drawn.pieces.size(), sample.placed.size());
   std::size_t poses = 0, drawn_poses = 0;
   for (std::size_t i = 0; i < sample.placed.size(); ++i) {
-    poses += (i == 0 ? filter.particles().at(sample.particle).submap : filter.segmap().at(sample.placed[i].id)).path.size();
+    poses +=
+        (i == 0 ? filter.particles().at(sample.particle).submap : filter.segmap().at(sample.placed[i].id)).path.size();
     drawn_poses += drawn.pieces[i].size();
   }
   EXPECT_EQ(drawn_poses, poses);

@@ -82,7 +82,8 @@ TEST(SegSlam, SegmentsMatchesAndClosesTheLoop) {
   ASSERT_EQ(paths.pieces.size(), r.best.placed.size());
   std::size_t reentries = 0, poses = 0;
   for (std::size_t i = 0; i < r.best.placed.size(); ++i) {
-    const GridSubmap& m = i == 0 ? filter.particles().at(r.best.particle).submap : filter.segmap().at(r.best.placed[i].id);
+    const GridSubmap& m =
+        i == 0 ? filter.particles().at(r.best.particle).submap : filter.segmap().at(r.best.placed[i].id);
     reentries += m.parent != kNoSubmap ? 1 : 0;
     poses += m.path.size();
   }
@@ -106,7 +107,8 @@ TEST(SegSlam, TheParticleChainMapFollowsTheParticlesTrajectory) {
   const MapSample chain = particle_chain_sample(filter, best);
   EXPECT_TRUE(chain.chain);
   std::size_t length = 1;
-  for (std::size_t id = filter.particles()[best].submap.predecessor; id != kNoSubmap; id = filter.segmap().at(id).predecessor) {
+  for (std::size_t id = filter.particles()[best].submap.predecessor; id != kNoSubmap;
+       id = filter.segmap().at(id).predecessor) {
     ++length;
   }
   EXPECT_EQ(chain.placed.size(), length);
@@ -211,7 +213,8 @@ namespace {
 OccupancyGrid room_corridor_map() {
   const auto world = test::room_world();
   OccupancyGrid map;
-  for (double x = 1.5; x < 8.5; x += 0.5) insert_scan(map, {x, 1.0, 0}, test::simulate_scan(world, {x, 1.0, 0}, {}), {});
+  for (double x = 1.5; x < 8.5; x += 0.5)
+    insert_scan(map, {x, 1.0, 0}, test::simulate_scan(world, {x, 1.0, 0}, {}), {});
   return map;
 }
 

@@ -32,7 +32,8 @@ EvidenceOctree twice(const EvidenceOctree& map, int shift_voxels) {
 }
 
 bool at(const WindowMatch3& m, const Pose4& truth) {
-  return (m.pose.position() - truth.position()).norm() < 0.15 && std::abs(normalize_angle(m.pose.yaw - truth.yaw)) < 0.03;
+  return (m.pose.position() - truth.position()).norm() < 0.15 &&
+         std::abs(normalize_angle(m.pose.yaw - truth.yaw)) < 0.03;
 }
 
 // The reach is eq. 18's sigma_tau times `sigmas`, only where it exceeds the capped search.
@@ -65,7 +66,7 @@ TEST(WideReentry, ReachIsSizedBySigmaTauBeyondTheCapOnly) {
 // submap, also after a segmentation started a fresh frame; a window's pose confirms it only
 // within the tolerance.
 TEST(WideReentry, PendingReentryPredictsThroughAFreshFrameAndIsConfirmedWithinTolerance) {
-  const Pose4 pose{3.0, 1.0, 0.2, 0.3};  // the particle in its submap
+  const Pose4 pose{3.0, 1.0, 0.2, 0.3};     // the particle in its submap
   const Pose4 match{12.0, -4.0, 0.1, 1.2};  // where the wide stage put it in the candidate
   const Pose4 guess{10.0, -6.0, 0.0, 1.0};  // where the map sample did
   const PendingReentry p = pending_of(7, match, guess, pose);
@@ -84,7 +85,7 @@ TEST(WideReentry, PendingReentryPredictsThroughAFreshFrameAndIsConfirmedWithinTo
   EXPECT_NEAR(after.x, truth.x, 1e-12);
   EXPECT_NEAR(after.y, truth.y, 1e-12);
   EXPECT_NEAR(normalize_angle(after.yaw - truth.yaw), 0.0, 1e-12);
-  const WideReentryOptions w;  // 0.5 m, 0.08 rad
+  const WideReentryOptions w;                                              // 0.5 m, 0.08 rad
   EXPECT_TRUE(confirms(truth, truth.compose({0.3, -0.3, 0.4, 0.05}), w));  // height is not checked
   EXPECT_FALSE(confirms(truth, truth.compose({0.5, 0.3, 0.0, 0.0}), w));
   EXPECT_FALSE(confirms(truth, truth.compose({0.0, 0.0, 0.0, 0.1}), w));
@@ -192,15 +193,19 @@ TEST(WideReentry, RegionsSearchedTogetherAreEachAnsweredFromTheirOwnPeaks) {
   ASSERT_EQ(found.size(), 3U);
   EXPECT_TRUE(found[0].ok && at(found[0], truth)) << found[0].rejection;
   EXPECT_TRUE(found[1].ok && at(found[1], copy)) << found[1].rejection;
-  EXPECT_NEAR(found[1].translation, (copy.position() - regions[1].centre.position()).norm(), 0.2);  // tau from its own centre
+  EXPECT_NEAR(found[1].translation, (copy.position() - regions[1].centre.position()).norm(),
+              0.2);  // tau from its own centre
   EXPECT_FALSE(found[2].ok);
   EXPECT_STREQ(found[2].rejection, "ambiguous");
   // A single region is match_window_unambiguous.
-  const WindowMatch3 alone = match_window_unambiguous(doubled, w, regions[0].centre, [&] {
-    MatchingOptions r = o;
-    r.search_radius = regions[0].radius;
-    return r;
-  }(), {}, wide);
+  const WindowMatch3 alone = match_window_unambiguous(
+      doubled, w, regions[0].centre,
+      [&] {
+        MatchingOptions r = o;
+        r.search_radius = regions[0].radius;
+        return r;
+      }(),
+      {}, wide);
   const WindowMatch3 one = match_regions_unambiguous(doubled, w, {regions[0]}, o, {}, wide).front();
   EXPECT_EQ(alone.ok, one.ok);
   EXPECT_EQ(alone.pose.x, one.pose.x);

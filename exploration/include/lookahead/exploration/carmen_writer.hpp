@@ -24,8 +24,7 @@ class CarmenWriter : public RunLog {
  public:
   /// Creates `path` and writes the PARAM header for `laser`; throws slam::ParseError naming
   /// the file when it cannot be opened.
-  CarmenWriter(const std::string& path, const LaserOptions& laser,
-               std::string host = "lookahead-sim");
+  CarmenWriter(const std::string& path, const LaserOptions& laser, std::string host = "lookahead-sim");
   ~CarmenWriter() override;
   CarmenWriter(const CarmenWriter&) = delete;
   CarmenWriter& operator=(const CarmenWriter&) = delete;

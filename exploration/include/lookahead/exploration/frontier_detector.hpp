@@ -15,9 +15,9 @@
 namespace lookahead::exploration {
 
 struct FrontierOptions {
-  double free_threshold = 0.35;     ///< a known cell below this occupancy is free, (0, 0.5)
-  double occupied_threshold = 0.65; ///< at or above this it is an obstacle, (0.5, 1)
-  int min_cluster_cells = 6;        ///< smaller clusters are noise (a gap between beams)
+  double free_threshold = 0.35;      ///< a known cell below this occupancy is free, (0, 0.5)
+  double occupied_threshold = 0.65;  ///< at or above this it is an obstacle, (0.5, 1)
+  int min_cluster_cells = 6;         ///< smaller clusters are noise (a gap between beams)
   /// Frontier cells this many cells apart still join one cluster, 1..5: far from the sensor
   /// the beams of a scan leave gaps in a frontier arc, which would split it into specks.
   int cluster_gap = 1;
@@ -28,7 +28,7 @@ struct FrontierOptions {
 struct FrontierCluster {
   std::vector<slam::CellIndex> cells;
   double centroid_x = 0.0, centroid_y = 0.0;  ///< [m]
-  bool has_goal = false;  ///< false when no free cell with clearance is near the cluster
+  bool has_goal = false;                      ///< false when no free cell with clearance is near the cluster
   double goal_x = 0.0, goal_y = 0.0;          ///< [m]
 };
 

@@ -20,15 +20,15 @@ struct GeneratedWorld {
 /// Defaults: 8 rooms a side, each 4.8 m x 8.4 m inside, a 2.4 m corridor, 0.15 m walls
 /// (KTH plans' walls are ~0.15 m, kth/SOURCES.md), giving 39.75 m x 19.8 m.
 struct OfficeOptions {
-  int rooms_per_side = 8;       ///< 1..100
-  double room_width = 4.8;      ///< inside width along the corridor [m], > door_width + 0.2
-  double room_depth = 8.4;      ///< inside depth away from the corridor [m], > 0
-  double corridor_width = 2.4;  ///< [m], > 0
-  double door_width = 1.0;      ///< [m], > 0; wide enough for the 0.5 m Pioneer disc
-  double wall_thickness = 0.15; ///< [m], >= resolution
-  double resolution = 0.05;     ///< [m/cell], > 0
-  std::uint64_t seed = 1;       ///< places each room's door along its corridor wall
-  void validate() const;        ///< throws std::invalid_argument naming the field
+  int rooms_per_side = 8;                 ///< 1..100
+  double room_width = 4.8;                ///< inside width along the corridor [m], > door_width + 0.2
+  double room_depth = 8.4;                ///< inside depth away from the corridor [m], > 0
+  double corridor_width = 2.4;            ///< [m], > 0
+  double door_width = 1.0;                ///< [m], > 0; wide enough for the 0.5 m Pioneer disc
+  double wall_thickness = 0.15;           ///< [m], >= resolution
+  double resolution = 0.05;               ///< [m/cell], > 0
+  std::uint64_t seed = 1;                 ///< places each room's door along its corridor wall
+  void validate() const;                  ///< throws std::invalid_argument naming the field
   [[nodiscard]] double width_m() const;   ///< outer width of the floor [m]
   [[nodiscard]] double height_m() const;  ///< outer depth of the floor [m]
 };
@@ -65,7 +65,7 @@ struct CorridorOptions {
   double wall_thickness = 0.2;  ///< [m], >= resolution
   double resolution = 0.05;     ///< [m/cell], > 0
   std::uint64_t seed = 1;
-  void validate() const;        ///< throws std::invalid_argument naming the field
+  void validate() const;  ///< throws std::invalid_argument naming the field
 };
 
 GeneratedWorld make_office(const OfficeOptions& options = {});

@@ -18,8 +18,8 @@ struct HypothesisCheck {
   /// The same against every world cell, the solid space beyond the outer walls and inside
   /// thick walls included (what was reported before 2026-11-22; kept for comparison).
   double psi_solid_world = 0.0;
-  std::size_t cells = 0;      ///< predicted cells
-  std::size_t correct = 0;    ///< ... whose class (wall or free) the world confirms
+  std::size_t cells = 0;    ///< predicted cells
+  std::size_t correct = 0;  ///< ... whose class (wall or free) the world confirms
   /// The two sides of Psi: wall samples (similarity_resolution cells) in the hypothesis, and
   /// in the world over the same samples (what tells a wrong wall from a missed one).
   int predicted_walls = 0, world_walls = 0;
@@ -27,17 +27,15 @@ struct HypothesisCheck {
 };
 
 /// One predicted cell at (x, y) against the world (the rule below).
-bool prediction_matches_world(bool predicted_wall, const World& world, double x, double y,
-                              double wall_tolerance = 0.1);
+bool prediction_matches_world(bool predicted_wall, const World& world, double x, double y, double wall_tolerance = 0.1);
 
 /// A predicted wall is correct when a true wall lies within `wall_tolerance` of it (a wall
 /// one cell off is the same wall), a predicted free cell when the world is free there.
 /// `observable`: World::cells()-shaped mask of the cells a robot can observe
 /// (observable_cells()); empty: every cell.
 HypothesisCheck check_against_world(const slam::HypothesisMap& hypothesis, const World& world,
-                                    const std::vector<std::uint8_t>& observable,
-                                    double occupied_threshold, double wall_tolerance = 0.1,
-                                    double similarity_resolution = 0.1,
+                                    const std::vector<std::uint8_t>& observable, double occupied_threshold,
+                                    double wall_tolerance = 0.1, double similarity_resolution = 0.1,
                                     int similarity_tolerance_cells = 1);
 
 }  // namespace lookahead::exploration

@@ -15,17 +15,17 @@
 namespace lookahead::exploration {
 
 struct LaserOptions {
-  double fov = M_PI;                     ///< field of view [rad], (0, 2 pi]; LMS-200: 180 deg
-  double angular_resolution = M_PI / 180;///< beam spacing [rad], > 0; LMS-200: 1, 0.5, 0.25 deg
+  double fov = M_PI;                       ///< field of view [rad], (0, 2 pi]; LMS-200: 180 deg
+  double angular_resolution = M_PI / 180;  ///< beam spacing [rad], > 0; LMS-200: 1, 0.5, 0.25 deg
   /// [m], > 0. 8 m is Stage's sicklaser (test_2008_sal2.world `range_max 8.0`; Shrestha et
   /// al.'s stored sick.inc, kth/SOURCES.md 6.3), the simulator P-SLAM ran on. The real
   /// LMS-200 reaches ~80 m, which would make every simulated room fully visible at once.
   double max_range = 8.0;
   /// Gaussian range noise [m], >= 0: the order of the LMS-200's centimetre-level accuracy.
   double range_sigma = 0.01;
-  double rate_hz = 10.0;        ///< scans per second, > 0 (the simulator loop's clock)
-  slam::Pose2 offset;           ///< laser in the robot frame; Stage's simple.world mounts it at 0
-  std::uint64_t seed = 1;       ///< range-noise engine
+  double rate_hz = 10.0;   ///< scans per second, > 0 (the simulator loop's clock)
+  slam::Pose2 offset;      ///< laser in the robot frame; Stage's simple.world mounts it at 0
+  std::uint64_t seed = 1;  ///< range-noise engine
 
   void validate() const;  ///< throws std::invalid_argument naming the field and value
   /// Beams from -fov/2 to +fov/2 inclusive (181 at 180/1 deg, as the LMS-200 and CARMEN's

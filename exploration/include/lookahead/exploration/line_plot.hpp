@@ -22,8 +22,7 @@ struct PlotOptions {
   double y_min = 0.0, y_max = 1.0;
 };
 
-void write_line_plot(const std::string& png_path, const std::vector<PlotSeries>& series,
-                     const PlotOptions& options);
+void write_line_plot(const std::string& png_path, const std::vector<PlotSeries>& series, const PlotOptions& options);
 
 /// Well-separated colours for series i = 0, 1, ...
 slam::Rgb series_colour(std::size_t i);

@@ -66,11 +66,11 @@ struct LookaheadOptions {
   /// other frontier goals (the paper's extension "predict several possible targets",
   /// sec. II-A). They queue on the worker, one delivered per latency period.
   int targets_per_selection = 4;
-  /// While the predictor has nothing queued (off here, on in MissionOptions::defaults()), predict the nearest frontier goals that
-  /// the look-ahead map does not cover yet (targets_per_selection at a time), a goal again
-  /// only `repredict_after` seconds after its last try (the map around it grows meanwhile).
-  /// The paper predicts "the next possible exploration goal" (sec. II-A); every frontier is
-  /// one, and a selection that knows which are predicted can leave them out.
+  /// While the predictor has nothing queued (off here, on in MissionOptions::defaults()), predict the nearest frontier
+  /// goals that the look-ahead map does not cover yet (targets_per_selection at a time), a goal again only
+  /// `repredict_after` seconds after its last try (the map around it grows meanwhile). The paper predicts "the next
+  /// possible exploration goal" (sec. II-A); every frontier is one, and a selection that knows which are predicted can
+  /// leave them out.
   bool predict_while_idle = false;
   double repredict_after = 10.0;  ///< [s, simulated]
   /// Keep the map and the prediction of every hypothesis and write one picture each into
@@ -80,14 +80,14 @@ struct LookaheadOptions {
 };
 
 struct PredictionRecord {
-  double time = 0.0;            ///< simulated time of the request [s]
-  double x = 0.0, y = 0.0;      ///< target [m]
-  std::string status;           ///< predictor::to_string(Prediction::Status)
-  double psi = 0.0;             ///< best Psi of the registration (0 without a control point)
-  double area = 0.0;            ///< predicted area [m^2]
-  double diameter = 0.0;        ///< of the surroundings registered last (large or d) [m]
-  double seconds = 0.0;         ///< wall time of the prediction
-  HypothesisCheck truth;        ///< of the hypothesis against the world (when predicted)
+  double time = 0.0;                              ///< simulated time of the request [s]
+  double x = 0.0, y = 0.0;                        ///< target [m]
+  std::string status;                             ///< predictor::to_string(Prediction::Status)
+  double psi = 0.0;                               ///< best Psi of the registration (0 without a control point)
+  double area = 0.0;                              ///< predicted area [m^2]
+  double diameter = 0.0;                          ///< of the surroundings registered last (large or d) [m]
+  double seconds = 0.0;                           ///< wall time of the prediction
+  HypothesisCheck truth;                          ///< of the hypothesis against the world (when predicted)
   std::optional<predictor::Alignment> alignment;  ///< the best registration, when one was scored
 };
 
@@ -102,8 +102,8 @@ class LookaheadMapping {
  public:
   /// `observable`: the world cells a robot can observe (observable_cells()), over which each
   /// hypothesis is scored; empty: every cell.
-  LookaheadMapping(const LookaheadOptions& options, const World& world,
-                   const slam::GridOptions& grid, std::vector<std::uint8_t> observable = {});
+  LookaheadMapping(const LookaheadOptions& options, const World& world, const slam::GridOptions& grid,
+                   std::vector<std::uint8_t> observable = {});
 
   /// A new selection: predict around each target in turn, on a copy of `map` (copy-on-write:
   /// cheap). Targets still queued from the previous selection are dropped.
@@ -132,7 +132,7 @@ class LookaheadMapping {
 
   slam::OccupancyGrid queued_map_;
   std::vector<std::pair<double, double>> queued_;  ///< targets not started yet
-  bool pending_ = false;  ///< one is running on the worker
+  bool pending_ = false;                           ///< one is running on the worker
   double due_ = 0.0;
   PredictionRecord pending_record_;
 };

@@ -45,10 +45,10 @@ struct MissionStatistics {
   int selections = 0, plans = 0, plan_failures = 0, replans = 0, stuck_goals = 0, grid_fallbacks = 0;
   double planning_time = 0.0;  ///< wall clock [s]
   int collisions = 0;
-  int safety_stops = 0;  ///< steps the reactive stop held the robot
-  int backtracks = 0;    ///< escapes along the robot's own trail (no frontier was reachable)
-  int squeezes = 0;      ///< paths planned without the safety margin
-  int forgiven_goals = 0;    ///< goals blacklisted for good, retried before "trapped"
+  int safety_stops = 0;                    ///< steps the reactive stop held the robot
+  int backtracks = 0;                      ///< escapes along the robot's own trail (no frontier was reachable)
+  int squeezes = 0;                        ///< paths planned without the safety margin
+  int forgiven_goals = 0;                  ///< goals blacklisted for good, retried before "trapped"
   std::size_t retired_frontier_cells = 0;  ///< frontier cells that outlived a visit
   std::size_t scans = 0, map_refreshes = 0;
   /// Simulated time [s] a selection first found every frontier left predicted (P-SLAM's end
@@ -111,13 +111,13 @@ class Mission {
   void record();
   void check_end();
   bool goal_still_useful() const;
-  bool goal_predicted() const;  ///< look-ahead mapping covers the current target
-  bool backtrack();  ///< follows the trail out of a place with no reachable frontier
-  bool squeeze();    ///< plans to a frontier on the map inflated by the body alone
-  bool last_resort();  ///< squeeze or backtrack, alternating, before the mission is trapped
-  bool second_chance();  ///< once: goals blacklisted for good are retried, progress along the path
+  bool goal_predicted() const;            ///< look-ahead mapping covers the current target
+  bool backtrack();                       ///< follows the trail out of a place with no reachable frontier
+  bool squeeze();                         ///< plans to a frontier on the map inflated by the body alone
+  bool last_resort();                     ///< squeeze or backtrack, alternating, before the mission is trapped
+  bool second_chance();                   ///< once: goals blacklisted for good are retried, progress along the path
   planner::Costmap body_costmap() const;  ///< the map inflated by the body, no safety margin
-  planner::FollowerOptions close_tracking() const;  ///< for paths that fit only where drawn
+  planner::FollowerOptions close_tracking() const;                            ///< for paths that fit only where drawn
   void follow(const Selection& s, const planner::FollowerOptions& tracking);  ///< a new goal and path
   bool path_ahead_blocked(const planner::VelocityCommand& cmd) const;
   void hold_or_replan();  ///< counts a reactive stop; gives the path up when it lasts
@@ -135,7 +135,7 @@ class Mission {
   FrontierDetector frontiers_;
   GoalBlacklist blacklist_;
   GoalBlacklist replan_failures_;  ///< goals given up once because no replan reached them
-  StuckClock stuck_clock_;  ///< gives the current goal up when the robot makes no progress
+  StuckClock stuck_clock_;         ///< gives the current goal up when the robot makes no progress
   std::unique_ptr<TargetStrategy> strategy_;
   std::unique_ptr<LookaheadMapping> lookahead_;
   GoalBlacklist predicted_targets_;  ///< frontier goals predicted lately (predict_while_idle)
@@ -162,8 +162,8 @@ class Mission {
   bool second_chance_used_ = false;
   bool map_changed_ = false;
   bool visiting_predicted_ = false;  ///< the goal was chosen with every frontier predicted
-  bool path_blocked_ = false;  ///< the follower was dropped because new walls block its path
-  int stop_streak_ = 0;        ///< consecutive steps the reactive stop has held the robot
+  bool path_blocked_ = false;        ///< the follower was dropped because new walls block its path
+  int stop_streak_ = 0;              ///< consecutive steps the reactive stop has held the robot
   std::size_t last_resamplings_ = 0, last_best_ = 0;
   slam::Pose2 last_refresh_pose_;
   /// Where scans went into the map since the last refresh: the bounding box of their poses.

@@ -15,8 +15,7 @@
 namespace lookahead::exploration {
 
 /// Reads options from a YAML file on top of `base`, then harmonize() and validate().
-MissionOptions load_mission_options(const std::string& path,
-                                    const MissionOptions& base = MissionOptions::defaults());
+MissionOptions load_mission_options(const std::string& path, const MissionOptions& base = MissionOptions::defaults());
 /// Same, from YAML text (`source` names it in errors).
 MissionOptions parse_mission_options(const std::string& yaml, const std::string& source,
                                      const MissionOptions& base = MissionOptions::defaults());

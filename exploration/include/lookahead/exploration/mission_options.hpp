@@ -34,18 +34,18 @@ struct MissionOptions {
                                      ///< predictive[-utility|-advantage]
   double utility_lambda = 1.0;       ///< utility = gain [m^2] - lambda * cost [m]
   PoseSource pose_source = PoseSource::kSlam;
-  std::uint64_t seed = 1;            ///< seeds the sensor, odometry, SLAM and planner
-  double time_limit = 1800.0;        ///< simulated seconds, > 0
-  double coverage_goal = 0.95;       ///< stop at this share of the reachable free area, (0, 1]
-  double goal_check_period = 1.0;    ///< how often the current goal is re-examined [s]
-  double stuck_time = 30.0;          ///< no progress this long: blacklist the goal [s]
+  std::uint64_t seed = 1;          ///< seeds the sensor, odometry, SLAM and planner
+  double time_limit = 1800.0;      ///< simulated seconds, > 0
+  double coverage_goal = 0.95;     ///< stop at this share of the reachable free area, (0, 1]
+  double goal_check_period = 1.0;  ///< how often the current goal is re-examined [s]
+  double stuck_time = 30.0;        ///< no progress this long: blacklist the goal [s]
   /// Only on a detour (more than 10 m of path left, over twice the straight distance), a
   /// shorter path left counts as progress too: a ring corridor can lead away from its goal
   /// for minutes, while in a door the margin flickers on the replanned paths stay short.
   bool detour_progress = true;
-  int max_goal_attempts = 5;         ///< candidates tried per selection before "trapped"
-  double metrics_period = 1.0;       ///< coverage is sampled this often [s]
-  double frame_period = 2.0;         ///< animation frame every [s]; 0 = no animation
+  int max_goal_attempts = 5;                   ///< candidates tried per selection before "trapped"
+  double metrics_period = 1.0;                 ///< coverage is sampled this often [s]
+  double frame_period = 2.0;                   ///< animation frame every [s]; 0 = no animation
   double initial_turn = 2 * 3.14159265358979;  ///< turn in place at the start [rad]
   /// The robot's map counts a cell as explored (free) below this occupancy.
   double free_threshold = 0.35;

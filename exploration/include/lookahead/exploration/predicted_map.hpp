@@ -36,7 +36,7 @@ struct SkipRule {
   SkipVariant variant = SkipVariant::kFarSide;
   double region_radius = 7.0;     ///< kRegion: the region's reach from the goal [m], > 0
   double region_tolerance = 1.0;  ///< ... covered up to this much unpredicted area [m^2]
-  double occupied = 0.65;       ///< predicted walls: probability at least this
+  double occupied = 0.65;         ///< predicted walls: probability at least this
   /// kRegion: unknown gaps up to this wide in a wall (explored or predicted)
   /// close the region as the wall would [m]; 0: only unbroken walls close it.
   double wall_gap = 0.0;
@@ -58,8 +58,8 @@ struct SkipRule {
 
 /// A frontier's unexplored region (PredictedMap::region_area) [m^2].
 struct RegionArea {
-  double predicted = 0.0;    ///< by a hypothesis with the minimum Psi
-  double unpredicted = 0.0;  ///< what driving there would still reveal
+  double predicted = 0.0;             ///< by a hypothesis with the minimum Psi
+  double unpredicted = 0.0;           ///< what driving there would still reveal
   bool closed_by_prediction = false;  ///< a predicted wall bounds it
   /// An unexplored cell within the radius was left out of it: in a wall gap or beyond the boundary.
   bool closed_by_gap = false;
@@ -101,14 +101,14 @@ class PredictedMap {
   [[nodiscard]] double confidence(slam::CellIndex c) const;
   /// Share of the unknown 4-neighbours of the cluster's cells that are predicted with at
   /// least `min_confidence`: 1 when a look-ahead map already covers what lies beyond.
-  [[nodiscard]] double predicted_share(const slam::OccupancyGrid& map,
-                                       const FrontierCluster& cluster, double min_confidence) const;
+  [[nodiscard]] double predicted_share(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
+                                       double min_confidence) const;
   /// The unexplored region beyond the frontier that no hypothesis with `min_confidence`
   /// predicts [m^2]: unknown cells within `radius` of the cluster's goal reachable from its
   /// far side through unknown cells, not through predicted walls (probability >=
   /// `occupied`), counting those not predicted. What driving there would still reveal.
-  [[nodiscard]] double unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster,
-                                        double radius, double min_confidence, double occupied) const {
+  [[nodiscard]] double unpredicted_area(const slam::OccupancyGrid& map, const FrontierCluster& cluster, double radius,
+                                        double min_confidence, double occupied) const {
     SkipRule rule;
     rule.min_confidence = min_confidence;
     rule.variant = SkipVariant::kRegion;

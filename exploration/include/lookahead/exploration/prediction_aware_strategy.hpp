@@ -23,8 +23,7 @@ class PredictionAwareStrategy : public TargetStrategy {
   /// nullopt when every candidate is predicted: nothing is left worth driving to.
   [[nodiscard]] std::optional<std::size_t> choose(const std::vector<Candidate>& c) const override;
   /// The base strategy's choice over every candidate, predicted or not.
-  [[nodiscard]] std::optional<std::size_t> choose_any(
-      const std::vector<Candidate>& c) const override {
+  [[nodiscard]] std::optional<std::size_t> choose_any(const std::vector<Candidate>& c) const override {
     return base_->choose(c);
   }
   [[nodiscard]] bool uses_prediction() const override { return true; }

@@ -15,13 +15,13 @@ namespace lookahead::exploration {
 struct PredictionSummary {
   bool enabled = false;
   int requests = 0, hypotheses = 0, no_control_point = 0, no_match = 0;
-  std::vector<double> psi_world;        ///< per hypothesis: Psi against the observable true world
-  std::vector<double> psi_solid_world;  ///< ... against every world cell (HypothesisCheck)
+  std::vector<double> psi_world;                     ///< per hypothesis: Psi against the observable true world
+  std::vector<double> psi_solid_world;               ///< ... against every world cell (HypothesisCheck)
   std::vector<PredictionRecord> hypothesis_records;  ///< the requests that made a hypothesis
   double mean_psi_world = 0.0;
   double share_psi_world_above_04 = 0.0;
-  double predicted_area = 0.0;       ///< summed over hypotheses [m^2]
-  double cell_accuracy = 0.0;        ///< predicted cells whose class the world confirms
+  double predicted_area = 0.0;                   ///< summed over hypotheses [m^2]
+  double cell_accuracy = 0.0;                    ///< predicted cells whose class the world confirms
   double mean_seconds = 0.0, max_seconds = 0.0;  ///< wall time per prediction
   /// The look-ahead map at the end: cells predicted and still unexplored.
   double final_predicted_area = 0.0;  ///< [m^2]

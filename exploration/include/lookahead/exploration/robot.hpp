@@ -27,10 +27,10 @@ struct RobotOptions {
 };
 
 struct StepResult {
-  slam::Pose2 pose;          ///< true pose after the step
-  bool collided = false;     ///< the commanded motion hit a wall and was cut short
-  double distance = 0.0;     ///< arc length actually driven [m]
-  double turned = 0.0;       ///< heading change actually made [rad]
+  slam::Pose2 pose;       ///< true pose after the step
+  bool collided = false;  ///< the commanded motion hit a wall and was cut short
+  double distance = 0.0;  ///< arc length actually driven [m]
+  double turned = 0.0;    ///< heading change actually made [rad]
 };
 
 /// True when a disc of `radius` at `centre` overlaps an occupied cell (exact disc-square test).

@@ -74,21 +74,17 @@ std::string run_id(const StudySpec& spec, const StudyRun& run);
 MissionOptions run_options(const StudySpec& spec, const StudyRun& run);
 /// What run_config.yaml holds: the mission id, the world as the study gives it, then every
 /// mission option. Without `mission_id` the id is computed (study_plan.hpp).
-std::string run_config_text(const StudySpec& spec, const StudyRun& run,
-                            const std::string& mission_id = "");
+std::string run_config_text(const StudySpec& spec, const StudyRun& run, const std::string& mission_id = "");
 /// The finished run in `dir` when its run_config.yaml equals `config_text`; nullopt means
 /// "run it" (missing, half-written, damaged or made with other inputs).
-std::optional<StudyRunResult> read_finished_run(const std::string& dir,
-                                                const std::string& config_text);
+std::optional<StudyRunResult> read_finished_run(const std::string& dir, const std::string& config_text);
 /// Every finished run of the plan read back from OUT/runs, without running anything.
 StudyResult collect_study(const StudySpec& spec);
 
 /// Runs what is not finished on `workers` threads (0 = std::thread::hardware_concurrency()),
 /// each mission single-threaded. A run that throws stops the study after the runs in flight
 /// (their folders are complete) and the exception is rethrown.
-StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress = nullptr,
-                      unsigned workers = 0);
-StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress,
-                      const StudyRunOptions& options);
+StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress = nullptr, unsigned workers = 0);
+StudyResult run_study(const StudySpec& spec, const StudyProgressCallback& progress, const StudyRunOptions& options);
 
 }  // namespace lookahead::exploration

@@ -53,7 +53,6 @@ struct StudySpec {
 
 StudySpec load_study(const std::string& path);
 /// `source` names the text in errors; `base_dir` is where relative world paths start.
-StudySpec parse_study(const std::string& yaml, const std::string& source,
-                      const std::string& base_dir);
+StudySpec parse_study(const std::string& yaml, const std::string& source, const std::string& base_dir);
 
 }  // namespace lookahead::exploration

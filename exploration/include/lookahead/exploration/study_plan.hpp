@@ -30,8 +30,7 @@ std::uint64_t fnv1a64(const std::string& bytes, std::uint64_t state = 0xcbf29ce4
 std::vector<std::string> world_fingerprints(const StudySpec& spec);
 
 /// plan_runs() with ids and folders; `fingerprints` from world_fingerprints(spec).
-std::vector<PlannedMission> plan_missions(const StudySpec& spec,
-                                          const std::vector<std::string>& fingerprints);
+std::vector<PlannedMission> plan_missions(const StudySpec& spec, const std::vector<std::string>& fingerprints);
 std::vector<PlannedMission> plan_missions(const StudySpec& spec);
 
 /// The plan.csv text of `plan`.

@@ -26,8 +26,8 @@
 namespace lookahead::exploration {
 
 /// The runs of one world and strategy, in seed order.
-std::vector<const StudyRunResult*> runs_of(const StudySpec& spec, const StudyResult& result,
-                                           std::size_t world, const std::string& strategy);
+std::vector<const StudyRunResult*> runs_of(const StudySpec& spec, const StudyResult& result, std::size_t world,
+                                           const std::string& strategy);
 
 std::string study_results_csv(const StudySpec& spec, const StudyResult& result);
 std::string study_overall_csv(const StudySpec& spec, const StudyResult& result);
@@ -39,8 +39,8 @@ void write_study_plots(const std::string& dir, const StudySpec& spec, const Stud
 
 /// Mean coverage of `curves` on `grid` (simulated seconds): each curve is interpolated
 /// linearly and holds its last value after it ends (the mission stopped; its map stays).
-std::vector<double> mean_coverage_curve(
-    const std::vector<const std::vector<CoverageSample>*>& curves, const std::vector<double>& grid);
+std::vector<double> mean_coverage_curve(const std::vector<const std::vector<CoverageSample>*>& curves,
+                                        const std::vector<double>& grid);
 
 /// All of the above into spec.out.
 void write_study_outputs(const StudySpec& spec, const StudyResult& result);

@@ -22,7 +22,7 @@ struct SlurmJobOptions {
   std::size_t max_parallel = 0;  ///< array throttle (%K); 0 = no limit
   int cpus_per_task = 1;         ///< also the workers each task runs
   std::string partition;         ///< empty: the cluster's default
-  std::string time;  ///< per-task limit in a form sbatch takes ("2:00:00"); empty: default
+  std::string time;              ///< per-task limit in a form sbatch takes ("2:00:00"); empty: default
 };
 
 /// The array job script (logs in OUT/slurm/logs/array_%A_%a.log).

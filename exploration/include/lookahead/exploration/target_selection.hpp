@@ -18,11 +18,11 @@
 namespace lookahead::exploration {
 
 enum class SelectionOutcome {
-  kPlanned,       ///< a target and a path to it
-  kNoFrontier,    ///< no frontier with a goal is left: done
-  kUnreachable,   ///< frontiers exist, but none can be reached, or all reachable ones were
-                  ///< visited without clearing them: trapped
-  kPlanFailed,    ///< reachable frontiers exist, but the planner found no path this time
+  kPlanned,      ///< a target and a path to it
+  kNoFrontier,   ///< no frontier with a goal is left: done
+  kUnreachable,  ///< frontiers exist, but none can be reached, or all reachable ones were
+                 ///< visited without clearing them: trapped
+  kPlanFailed,   ///< reachable frontiers exist, but the planner found no path this time
 };
 
 struct Selection {
@@ -30,7 +30,7 @@ struct Selection {
   double goal_x = 0.0, goal_y = 0.0;
   planner::Path path;
   int plans = 0, plan_failures = 0;
-  int grid_fallbacks = 0;  ///< paths taken from the Dijkstra price when OMPL found none
+  int grid_fallbacks = 0;      ///< paths taken from the Dijkstra price when OMPL found none
   double planning_time = 0.0;  ///< [s], summed over the attempts
   std::size_t clusters = 0, candidates = 0;
   /// The strategy skipped every reachable frontier as predicted; the target is one of them.

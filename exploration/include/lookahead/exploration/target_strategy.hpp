@@ -31,8 +31,7 @@ class TargetStrategy {
   [[nodiscard]] virtual std::optional<std::size_t> choose(const std::vector<Candidate>& candidates) const = 0;
   /// The choice with no candidate skipped, for when choose() skips them all: a predicted
   /// region counts as explored only once observed, so the robot still goes there.
-  [[nodiscard]] virtual std::optional<std::size_t> choose_any(
-      const std::vector<Candidate>& candidates) const {
+  [[nodiscard]] virtual std::optional<std::size_t> choose_any(const std::vector<Candidate>& candidates) const {
     return choose(candidates);
   }
   /// True when candidates must be priced with the look-ahead map (predicted cells count as

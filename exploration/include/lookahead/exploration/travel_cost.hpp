@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Travel cost from the robot to every reachable cell: Dijkstra over 8-connected traversable
-// cells (steps of 1 and sqrt 2 cells; a diagonal step needs both cells beside it free). One run per target selection prices every frontier
-// goal at once, where a planner call per goal would cost a planning budget each.
+// cells (steps of 1 and sqrt 2 cells; a diagonal step needs both cells beside it free). One run per target selection
+// prices every frontier goal at once, where a planner call per goal would cost a planning budget each.
 #pragma once
 
 #include <functional>

@@ -22,27 +22,22 @@ class World {
   World() = default;
   /// width x height cells of `resolution` metres, all set to `fill`; throws
   /// std::invalid_argument on a non-positive size or resolution.
-  World(int width, int height, double resolution, const Eigen::Vector2d& origin,
-        std::uint8_t fill = kFree);
+  World(int width, int height, double resolution, const Eigen::Vector2d& origin, std::uint8_t fill = kFree);
 
   [[nodiscard]] int width() const { return width_; }
   [[nodiscard]] int height() const { return height_; }
-  [[nodiscard]] double resolution() const { return resolution_; }  ///< [m/cell]
+  [[nodiscard]] double resolution() const { return resolution_; }          ///< [m/cell]
   [[nodiscard]] const Eigen::Vector2d& origin() const { return origin_; }  ///< [m]
   [[nodiscard]] double width_m() const { return width_ * resolution_; }
   [[nodiscard]] double height_m() const { return height_ * resolution_; }
 
-  [[nodiscard]] bool contains(slam::CellIndex c) const {
-    return c.x >= 0 && c.y >= 0 && c.x < width_ && c.y < height_;
-  }
+  [[nodiscard]] bool contains(slam::CellIndex c) const { return c.x >= 0 && c.y >= 0 && c.x < width_ && c.y < height_; }
   /// The cell whose square holds p (floor, so it may lie outside the raster).
   [[nodiscard]] slam::CellIndex cell_of(const Eigen::Vector2d& p) const;
   [[nodiscard]] Eigen::Vector2d center_of(slam::CellIndex c) const;
 
   /// Outside the raster counts as occupied: a robot cannot leave the building.
-  [[nodiscard]] bool is_occupied(slam::CellIndex c) const {
-    return !contains(c) || cells_[index(c)] != kFree;
-  }
+  [[nodiscard]] bool is_occupied(slam::CellIndex c) const { return !contains(c) || cells_[index(c)] != kFree; }
   [[nodiscard]] bool is_occupied(double x, double y) const { return is_occupied(cell_of({x, y})); }
 
   void set(slam::CellIndex c, std::uint8_t value) { cells_[index(c)] = value; }
@@ -59,8 +54,7 @@ class World {
 
  private:
   [[nodiscard]] std::size_t index(slam::CellIndex c) const {
-    return static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width_) +
-           static_cast<std::size_t>(c.x);
+    return static_cast<std::size_t>(c.y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(c.x);
   }
 
   int width_ = 0;

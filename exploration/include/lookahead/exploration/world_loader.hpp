@@ -41,8 +41,8 @@ struct PixelRule {
 };
 
 struct ImageWorldOptions {
-  double resolution = 0.05;           ///< [m/pixel], > 0
-  Eigen::Vector2d origin{0.0, 0.0};   ///< lower-left corner of the image in the world [m]
+  double resolution = 0.05;          ///< [m/pixel], > 0
+  Eigen::Vector2d origin{0.0, 0.0};  ///< lower-left corner of the image in the world [m]
   PixelRule rule;
 };
 

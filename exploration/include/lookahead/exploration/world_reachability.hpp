@@ -27,8 +27,7 @@ struct ReachableArea {
 /// Flood fill from `start` [m] for a robot of `robot_radius` [m] (>= 0; 0 = a point robot).
 /// Inflation is conservative: a cell is blocked when the nearest occupied cell centre is
 /// closer than radius + half a cell diagonal.
-ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& start,
-                                  double robot_radius);
+ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& start, double robot_radius);
 
 /// [m]: how far beyond the reachable free space a wall is still seen (its surface layer).
 constexpr double kObservableMargin = 0.15;

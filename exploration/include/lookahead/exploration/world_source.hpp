@@ -11,13 +11,13 @@
 namespace lookahead::exploration {
 
 struct WorldSpec {
-  std::string name = "office";          ///< office | maze | corridor | path to a file
-  double image_resolution = 0.0;        ///< [m/pixel], for plain images only: must be stated
+  std::string name = "office";    ///< office | maze | corridor | path to a file
+  double image_resolution = 0.0;  ///< [m/pixel], for plain images only: must be stated
   /// Pixel rule of a plain image: "stage" (darker than 128 is a wall) or "only_white"
   /// (only 255 is free: P2 Explore's KTH plans, whose outside is grey).
   std::string pixel_rule = "stage";
-  std::optional<slam::Pose2> start;     ///< default: the generator's, or a free spot
-  std::uint64_t seed = 1;               ///< for generated worlds
+  std::optional<slam::Pose2> start;  ///< default: the generator's, or a free spot
+  std::uint64_t seed = 1;            ///< for generated worlds
 };
 
 /// Loads the world and picks the start; errors (ParseError, invalid_argument) name the file.

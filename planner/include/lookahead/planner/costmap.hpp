@@ -84,8 +84,7 @@ class Costmap {
 
  private:
   [[nodiscard]] std::size_t index(int local_x, int local_y) const {
-    return static_cast<std::size_t>(local_y) * static_cast<std::size_t>(width_) +
-           static_cast<std::size_t>(local_x);
+    return static_cast<std::size_t>(local_y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(local_x);
   }
   /// Blocked cells reach this many cells (the radius, rounded up, plus one).
   [[nodiscard]] int inflation_reach() const;

@@ -27,7 +27,7 @@ struct FollowerOptions {
   double max_linear_speed = 0.5;       ///< [m/s], (0, 5]
   double max_turn_rate = 1.0;          ///< [rad/s], (0, 10]
   double rotate_in_place_angle = 0.8;  ///< heading error that stops forward motion [rad], (0, pi]
-  double goal_tolerance = 0.1;  ///< done within this distance of the last waypoint [m], (0, 5]
+  double goal_tolerance = 0.1;         ///< done within this distance of the last waypoint [m], (0, 5]
   /// Speed near the goal: v <= approach_gain * distance to goal [1/s], (0, 100].
   double approach_gain = 1.0;
 };

@@ -72,12 +72,12 @@ struct PlanResult {
 
 /// Builds the costmap from `map` (options.costmap) and plans from the start pose's position
 /// to (goal_x, goal_y). Throws std::invalid_argument for invalid options only.
-[[nodiscard]] PlanResult plan(const slam::OccupancyGrid& map, const slam::Pose2& start,
-                              double goal_x, double goal_y, const PlannerOptions& options);
+[[nodiscard]] PlanResult plan(const slam::OccupancyGrid& map, const slam::Pose2& start, double goal_x, double goal_y,
+                              const PlannerOptions& options);
 
 /// Same on a costmap the caller already built (replanning on an unchanged map);
 /// options.costmap is ignored.
-[[nodiscard]] PlanResult plan(const Costmap& costmap, const slam::Pose2& start, double goal_x,
-                              double goal_y, const PlannerOptions& options);
+[[nodiscard]] PlanResult plan(const Costmap& costmap, const slam::Pose2& start, double goal_x, double goal_y,
+                              const PlannerOptions& options);
 
 }  // namespace lookahead::planner

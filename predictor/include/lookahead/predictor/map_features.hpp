@@ -27,14 +27,14 @@ struct Corner {
 };
 
 struct FeatureOptions {
-  double occupied_threshold = 0.65;  ///< cells at or above this occupancy are walls, (0.5, 1)
-  int hough_votes = 12;              ///< accumulator votes for a line (cells on it), >= 2
-  double min_line_length = 0.6;      ///< shorter segments are clutter [m]
-  double max_line_gap = 0.2;         ///< gaps a segment may bridge (missed wall cells) [m]
-  double corner_reach = 0.3;         ///< a corner's lines must end this close to it [m]
-  double min_corner_angle = 0.5;     ///< lines meeting at less than this are not a corner [rad]
-  int max_gradient_corners = 400;    ///< cap on Shi-Tomasi candidates (bounds the cost)
-  double gradient_quality = 0.05;    ///< Shi-Tomasi quality level relative to the best, (0, 1)
+  double occupied_threshold = 0.65;    ///< cells at or above this occupancy are walls, (0.5, 1)
+  int hough_votes = 12;                ///< accumulator votes for a line (cells on it), >= 2
+  double min_line_length = 0.6;        ///< shorter segments are clutter [m]
+  double max_line_gap = 0.2;           ///< gaps a segment may bridge (missed wall cells) [m]
+  double corner_reach = 0.3;           ///< a corner's lines must end this close to it [m]
+  double min_corner_angle = 0.5;       ///< lines meeting at less than this are not a corner [rad]
+  int max_gradient_corners = 400;      ///< cap on Shi-Tomasi candidates (bounds the cost)
+  double gradient_quality = 0.05;      ///< Shi-Tomasi quality level relative to the best, (0, 1)
   double min_corner_separation = 0.3;  ///< corners closer than this are one corner [m]
 };
 

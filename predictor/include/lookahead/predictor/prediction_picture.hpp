@@ -21,8 +21,7 @@ std::vector<slam::PicturePoints> predicted_cell_overlays(const slam::OccupancyGr
                                                          const std::function<bool(slam::CellIndex)>& show = nullptr);
 
 /// `extra` overlays are drawn over the map and under the hypothesis (e.g. true walls).
-void write_prediction_picture(const std::string& png_path, const slam::OccupancyGrid& map,
-                              const Prediction& prediction, const PredictorOptions& options,
-                              const std::vector<slam::PicturePoints>& extra = {});
+void write_prediction_picture(const std::string& png_path, const slam::OccupancyGrid& map, const Prediction& prediction,
+                              const PredictorOptions& options, const std::vector<slam::PicturePoints>& extra = {});
 
 }  // namespace lookahead::predictor

@@ -36,8 +36,7 @@ struct Registration {
 
 /// Tries every reference corner (bounded by options.max_reference_corners) against the
 /// control point over the target region's samples.
-Registration register_region(const CoarseOccupancy& map, const RegionSamples& target_region,
-                             const Corner& control, const std::vector<Corner>& corners,
-                             const PredictorOptions& options);
+Registration register_region(const CoarseOccupancy& map, const RegionSamples& target_region, const Corner& control,
+                             const std::vector<Corner>& corners, const PredictorOptions& options);
 
 }  // namespace lookahead::predictor

@@ -21,8 +21,7 @@ namespace lookahead::predictor {
 /// when any fine cell in it is. Row-major, cell (0, 0) at `origin`.
 class CoarseOccupancy {
  public:
-  CoarseOccupancy(const slam::OccupancyGrid& grid, double resolution, double occupied_threshold,
-                  int tolerance_cells);
+  CoarseOccupancy(const slam::OccupancyGrid& grid, double resolution, double occupied_threshold, int tolerance_cells);
   [[nodiscard]] double resolution() const { return res_; }
   [[nodiscard]] bool occupied(double x, double y) const { return read(occupied_, x, y); }
   /// An occupied cell within the tolerance of (x, y).
@@ -44,10 +43,10 @@ struct RegionSamples {
 RegionSamples disc_samples(double cx, double cy, double diameter, double resolution);
 
 struct SimilarityScore {
-  double psi = 0.0;           ///< eq. 5 (with the tolerance above)
-  int target_occupied = 0;    ///< sum J(S_f)
-  int reference_occupied = 0; ///< sum J(C)
-  int new_known = 0;          ///< samples unknown in the target but known in the reference
+  double psi = 0.0;            ///< eq. 5 (with the tolerance above)
+  int target_occupied = 0;     ///< sum J(S_f)
+  int reference_occupied = 0;  ///< sum J(C)
+  int new_known = 0;           ///< samples unknown in the target but known in the reference
   /// Walls of one map on cells the other has explored as free (no wall within the
   /// tolerance): evidence against the alignment that eq. 5, counting occupied cells only,
   /// cannot see.

@@ -22,13 +22,13 @@ namespace lookahead::predictor {
 struct Prediction {
   enum class Status { kPredicted, kNoControlPoint, kNoMatch };
   Status status = Status::kNoControlPoint;
-  double target_x = 0, target_y = 0;       ///< the frontier cell f [m]
-  std::optional<Alignment> alignment;       ///< best one found, also when below threshold
-  int candidates = 0;                       ///< transforms scored
-  double predicted_area = 0.0;              ///< cells in the hypothesis [m^2]
-  double diameter = 0.0;                    ///< of the surroundings registered last [m]
-  double seconds = 0.0;                     ///< wall time of the whole prediction
-  MapFeatures features;                     ///< of the explored map (for pictures)
+  double target_x = 0, target_y = 0;                      ///< the frontier cell f [m]
+  std::optional<Alignment> alignment;                     ///< best one found, also when below threshold
+  int candidates = 0;                                     ///< transforms scored
+  double predicted_area = 0.0;                            ///< cells in the hypothesis [m^2]
+  double diameter = 0.0;                                  ///< of the surroundings registered last [m]
+  double seconds = 0.0;                                   ///< wall time of the whole prediction
+  MapFeatures features;                                   ///< of the explored map (for pictures)
   std::shared_ptr<const slam::HypothesisMap> hypothesis;  ///< set when kPredicted
 };
 const char* to_string(Prediction::Status status);
@@ -43,8 +43,7 @@ struct ExploredMapModel {
 ExploredMapModel model_explored_map(const slam::OccupancyGrid& map, const PredictorOptions& options);
 
 /// One prediction of the region around the target (tx, ty) on `map`.
-Prediction predict_structure(const slam::OccupancyGrid& map, double tx, double ty,
-                             const PredictorOptions& options);
+Prediction predict_structure(const slam::OccupancyGrid& map, double tx, double ty, const PredictorOptions& options);
 /// The same with the map's model already computed (several targets on one map).
 Prediction predict_structure(const slam::OccupancyGrid& map, const ExploredMapModel& model, double tx, double ty,
                              const PredictorOptions& options);

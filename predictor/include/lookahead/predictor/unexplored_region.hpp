@@ -18,7 +18,6 @@ constexpr double kSeedRadius = 1.0;
 /// outer wall) are not beyond this frontier, and a hypothesis there could never be checked
 /// by going to the target. Seeds behind a wall within kSeedRadius of f do count (see the
 /// .cpp for why).
-std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty,
-                                               double diameter);
+std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty, double diameter);
 
 }  // namespace lookahead::predictor

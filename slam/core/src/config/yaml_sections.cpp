@@ -9,8 +9,8 @@
 namespace lookahead::slam::config {
 
 void fail_at(const std::string& source, const YAML::Node& node, const std::string& key, const std::string& why) {
-  throw ParseError(source, static_cast<std::size_t>(node.Mark().line + 1), key,
-                   node.IsScalar() ? node.Scalar() : "", why);
+  throw ParseError(source, static_cast<std::size_t>(node.Mark().line + 1), key, node.IsScalar() ? node.Scalar() : "",
+                   why);
 }
 
 YAML::Node parse_sections(const std::string& text, const std::string& source) {

@@ -8,10 +8,10 @@ namespace lookahead::slam {
 
 Pose3 make_pose3(const Eigen::Vector3d& position, const Euler& a) {
   Pose3 p = Pose3::Identity();
-  p.linear() = (Eigen::AngleAxisd(a.yaw, Eigen::Vector3d::UnitZ()) *
-                Eigen::AngleAxisd(a.pitch, Eigen::Vector3d::UnitY()) *
-                Eigen::AngleAxisd(a.roll, Eigen::Vector3d::UnitX()))
-                   .toRotationMatrix();
+  p.linear() =
+      (Eigen::AngleAxisd(a.yaw, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(a.pitch, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(a.roll, Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
   p.translation() = position;
   return p;
 }

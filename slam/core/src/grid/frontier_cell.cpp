@@ -48,9 +48,8 @@ bool FrontierCellTest::is_unexplored(const OccupancyGrid& grid, CellIndex n) con
 bool FrontierCellTest::is_frontier(const OccupancyGrid& grid, CellIndex c) const {
   if (!is_free(grid, c)) return false;
   // 4-neighbourhood: a diagonal unknown cell alone is a gap between beams, not a way out.
-  const bool borders_unexplored =
-      is_unexplored(grid, {c.x + 1, c.y}) || is_unexplored(grid, {c.x - 1, c.y}) ||
-      is_unexplored(grid, {c.x, c.y + 1}) || is_unexplored(grid, {c.x, c.y - 1});
+  const bool borders_unexplored = is_unexplored(grid, {c.x + 1, c.y}) || is_unexplored(grid, {c.x - 1, c.y}) ||
+                                  is_unexplored(grid, {c.x, c.y + 1}) || is_unexplored(grid, {c.x, c.y - 1});
   if (!borders_unexplored || !rule_.skip_wall_cells) return borders_unexplored;
   // A free cell that touches a wall and unknown space is the unseen inside of that wall
   // (beams graze a wall and leave gaps between its hits), not a way into new space: going

@@ -1,22 +1,20 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/grid/occupancy_grid.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <unordered_set>
 
-#include <fmt/format.h>
-
 #include "lookahead/slam/limits/input_limits.hpp"
 
 namespace lookahead::slam {
 namespace {
 
-int to_fixed(double log_odds) {
-  return static_cast<int>(std::lround(log_odds * GridTile::kLogOddsScale));
-}
+int to_fixed(double log_odds) { return static_cast<int>(std::lround(log_odds * GridTile::kLogOddsScale)); }
 
 /// A cell coordinate, clamped to +-2^30 so that a point far off any map (or not finite)
 /// becomes a cell the extent check refuses instead of an integer overflow.
@@ -44,8 +42,7 @@ OccupancyGrid::OccupancyGrid(const GridOptions& options)
         options.obstacle_on < options.log_odds_max)) {
     throw std::invalid_argument("need log_odds_min < obstacle_off < obstacle_on < log_odds_max");
   }
-  radius_cells_ = std::max(1, static_cast<int>(std::ceil(options.distance_field_radius /
-                                                         options.resolution)));
+  radius_cells_ = std::max(1, static_cast<int>(std::ceil(options.distance_field_radius / options.resolution)));
   if (radius_cells_ > 15) throw std::invalid_argument("distance_field_radius over 15 cells");
   auto disk = std::make_shared<std::vector<Offset>>();
   for (int dy = -radius_cells_; dy <= radius_cells_; ++dy) {
@@ -54,8 +51,7 @@ OccupancyGrid::OccupancyGrid(const GridOptions& options)
       if (d2 < radius_cells_ * radius_cells_) disk->push_back({dx, dy, d2});
     }
   }
-  std::stable_sort(disk->begin(), disk->end(),
-                   [](const Offset& a, const Offset& b) { return a.d2 < b.d2; });
+  std::stable_sort(disk->begin(), disk->end(), [](const Offset& a, const Offset& b) { return a.d2 < b.d2; });
   disk_ = std::move(disk);
 }
 
@@ -96,26 +92,25 @@ bool OccupancyGrid::known_bounds(CellIndex& min, CellIndex& max) const {
 void OccupancyGrid::check_extent(std::int64_t tiles_w, std::int64_t tiles_h) const {
   if (tiles_w * tiles_h <= limits::kMaxGridTiles) return;
   const double tile_m = GridTile::kSide * options_.resolution;
-  throw limits::ResourceLimitError(fmt::format(
-      "the map would span {:.0f} m x {:.0f} m ({} x {} tiles of {} m), over the limit of {} tiles "
-      "per grid (limits::kMaxGridTiles); a pose far off the map (odometry jump, huge motion noise?)",
-      static_cast<double>(tiles_w) * tile_m, static_cast<double>(tiles_h) * tile_m, tiles_w, tiles_h,
-      tile_m, limits::kMaxGridTiles));
+  throw limits::ResourceLimitError(
+      fmt::format("the map would span {:.0f} m x {:.0f} m ({} x {} tiles of {} m), over the limit of {} tiles "
+                  "per grid (limits::kMaxGridTiles); a pose far off the map (odometry jump, huge motion noise?)",
+                  static_cast<double>(tiles_w) * tile_m, static_cast<double>(tiles_h) * tile_m, tiles_w, tiles_h,
+                  tile_m, limits::kMaxGridTiles));
 }
 
 void OccupancyGrid::grow_to_include(int tx, int ty) {
-  if (tiles_w_ > 0 && tx >= tile_x0_ && ty >= tile_y0_ && tx < tile_x0_ + tiles_w_ &&
-      ty < tile_y0_ + tiles_h_) {
+  if (tiles_w_ > 0 && tx >= tile_x0_ && ty >= tile_y0_ && tx < tile_x0_ + tiles_w_ && ty < tile_y0_ + tiles_h_) {
     return;
   }
   // Grow with a margin so a robot driving along an edge does not reallocate every scan.
   constexpr int kMargin = 8;
   const int x0 = tiles_w_ ? std::min(tile_x0_, tx - (tx < tile_x0_ ? kMargin : 0)) : tx - kMargin;
   const int y0 = tiles_h_ ? std::min(tile_y0_, ty - (ty < tile_y0_ ? kMargin : 0)) : ty - kMargin;
-  const int x1 = tiles_w_ ? std::max(tile_x0_ + tiles_w_, tx + 1 + (tx >= tile_x0_ + tiles_w_ ? kMargin : 0))
-                          : tx + 1 + kMargin;
-  const int y1 = tiles_h_ ? std::max(tile_y0_ + tiles_h_, ty + 1 + (ty >= tile_y0_ + tiles_h_ ? kMargin : 0))
-                          : ty + 1 + kMargin;
+  const int x1 =
+      tiles_w_ ? std::max(tile_x0_ + tiles_w_, tx + 1 + (tx >= tile_x0_ + tiles_w_ ? kMargin : 0)) : tx + 1 + kMargin;
+  const int y1 =
+      tiles_h_ ? std::max(tile_y0_ + tiles_h_, ty + 1 + (ty >= tile_y0_ + tiles_h_ ? kMargin : 0)) : ty + 1 + kMargin;
   check_extent(std::int64_t{x1} - x0, std::int64_t{y1} - y0);
   std::vector<std::shared_ptr<GridTile>> grown(static_cast<std::size_t>((x1 - x0) * (y1 - y0)));
   for (int iy = 0; iy < tiles_h_; ++iy) {
@@ -201,8 +196,8 @@ std::size_t OccupancyGrid::tiles_shared_with(const OccupancyGrid& other) const {
   for (const auto& t : tiles_) {
     if (t) mine.insert(t.get());
   }
-  return static_cast<std::size_t>(std::count_if(other.tiles_.begin(), other.tiles_.end(),
-                                                [&](const auto& u) { return mine.count(u.get()); }));
+  return static_cast<std::size_t>(
+      std::count_if(other.tiles_.begin(), other.tiles_.end(), [&](const auto& u) { return mine.count(u.get()); }));
 }
 
 }  // namespace lookahead::slam

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "bag_frames.hpp"
 
+#include <fmt/format.h>
+#include <nav_msgs/Odometry.h>
 #include <rosbag/view.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
-#include <nav_msgs/Odometry.h>
-#include <sensor_msgs/LaserScan.h>
 #include <set>
-#include <tf2_msgs/TFMessage.h>
 
 #include "lookahead/slam/io/parse_error.hpp"
 
@@ -108,7 +108,8 @@ BagFrames odometry_from_tf(rosbag::Bag& bag, const std::string& path, const BagR
 
 BagFrames read_frames(rosbag::Bag& bag, const std::string& path, const std::string& odom_topic,
                       const BagReadOptions& options) {
-  BagFrames f = odom_topic.empty() ? odometry_from_tf(bag, path, options) : odometry_from_topic(bag, odom_topic, options);
+  BagFrames f =
+      odom_topic.empty() ? odometry_from_tf(bag, path, options) : odometry_from_topic(bag, odom_topic, options);
   if (f.odometry.empty()) throw ParseError(path, 0, "odometry topic", odom_topic, "has no nav_msgs/Odometry messages");
   sort_by_stamp(f.odometry);
   return f;
@@ -142,7 +143,8 @@ Pose2 laser_mounting(rosbag::Bag& bag, const std::string& path, const std::strin
   }
   throw ParseError(path, 0, "laser frames", base_frame + " -> " + laser,
                    "no such transform on /tf_static or /tf (seen: " + listed(frame_pairs(bag)) +
-                       "); set --base-frame/--laser-frame (--laser-frame " + base_frame + " for a laser at the robot's origin)");
+                       "); set --base-frame/--laser-frame (--laser-frame " + base_frame +
+                       " for a laser at the robot's origin)");
 }
 
 Pose2 interpolate(const std::vector<TimedPose>& odom, double t) {

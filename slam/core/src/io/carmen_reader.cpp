@@ -14,8 +14,8 @@
 #include <cmath>
 #include <functional>
 #include <map>
-#include <unordered_set>
 #include <optional>
+#include <unordered_set>
 
 #include "lookahead/slam/io/carmen_fields.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
@@ -87,8 +87,7 @@ void parse_flaser(const Fields& f, ReaderState& s, const LogReadOptions& o, bool
   // The laser pose on the line already includes the mounting offset: recover it.
   scan.laser_offset = scan.odometry.between(laser);
   if (scan.laser_offset.norm() > 2.0) scan.laser_offset = Pose2{};  // not odometry-based
-  const double max_param = rear ? param_or(s, "robot_rear_laser_max", 1e9)
-                                 : param_or(s, "robot_front_laser_max", 1e9);
+  const double max_param = rear ? param_or(s, "robot_rear_laser_max", 1e9) : param_or(s, "robot_front_laser_max", 1e9);
   scan.max_range = std::min(o.no_return_range, max_param);
   flaser_geometry(s, scan);
   s.streams[rear ? 3 : 0].push_back(std::move(scan));
@@ -104,8 +103,8 @@ std::size_t parse_laser_head(const Fields& f, const LogReadOptions& o, LaserScan
   const std::size_t n = f.count(8, "num_readings", kMaxBeams);
   f.require(9 + n + 1, "ranges");
   read_ranges(f, 9, n, scan);
-  if (n > 1 && std::abs(scan.angle_increment * static_cast<double>(n - 1) - fov) >
-                   2.0 * std::abs(scan.angle_increment) + 1e-3) {
+  if (n > 1 &&
+      std::abs(scan.angle_increment * static_cast<double>(n - 1) - fov) > 2.0 * std::abs(scan.angle_increment) + 1e-3) {
     // angular_res disagrees with fov: trust fov, as the beam count infers it.
     scan.angle_increment = fov / static_cast<double>(n % 2 == 1 ? n - 1 : n);
   }
@@ -121,8 +120,7 @@ void parse_robotlaser(const Fields& f, ReaderState& s, const LogReadOptions& o) 
   if (trailing != 13 && trailing != 14) {
     f.fail("trailing fields", std::to_string(trailing), "expected 13 or 14 after the remissions");
   }
-  const Pose2 laser{f.number(p, "laser_x"), f.number(p + 1, "laser_y"),
-                    f.number(p + 2, "laser_theta")};
+  const Pose2 laser{f.number(p, "laser_x"), f.number(p + 1, "laser_y"), f.number(p + 2, "laser_theta")};
   scan.odometry = {f.number(p + 3, "robot_x"), f.number(p + 4, "robot_y"),
                    normalize_angle(f.number(p + 5, "robot_theta"))};
   scan.laser_offset = scan.odometry.between(laser);
@@ -145,8 +143,7 @@ void parse_rawlaser(const Fields& f, ReaderState& s, const LogReadOptions& o) {
 
 void parse_odom(const Fields& f, ReaderState& s) {
   f.require(10, "ODOM fields");
-  s.odometry.push_back({ipc_time(f), {f.number(1, "x"), f.number(2, "y"),
-                                      normalize_angle(f.number(3, "theta"))}});
+  s.odometry.push_back({ipc_time(f), {f.number(1, "x"), f.number(2, "y"), normalize_angle(f.number(3, "theta"))}});
 }
 
 void parse_param(const Fields& f, ReaderState& s) {
@@ -160,20 +157,25 @@ void parse_param(const Fields& f, ReaderState& s) {
 void parse_line(const Fields& f, ReaderState& s, const LogReadOptions& o) {
   const std::string_view kind = f.token(0);
   ++s.counts[std::string(kind)];
-  if (kind == "FLASER") parse_flaser(f, s, o, false);
-  else if (kind == "RLASER") parse_flaser(f, s, o, true);
-  else if (kind == "ROBOTLASER1") parse_robotlaser(f, s, o);
-  else if (kind == "RAWLASER1") parse_rawlaser(f, s, o);
-  else if (kind == "ODOM") parse_odom(f, s);
-  else if (kind == "PARAM") parse_param(f, s);
+  if (kind == "FLASER")
+    parse_flaser(f, s, o, false);
+  else if (kind == "RLASER")
+    parse_flaser(f, s, o, true);
+  else if (kind == "ROBOTLASER1")
+    parse_robotlaser(f, s, o);
+  else if (kind == "RAWLASER1")
+    parse_rawlaser(f, s, o);
+  else if (kind == "ODOM")
+    parse_odom(f, s);
+  else if (kind == "PARAM")
+    parse_param(f, s);
   // Every other message (SYNC, TRUEPOS, NEFF, VERTEX2, EDGE2, ...) carries nothing we use.
 }
 
 // Odometry at time t, interpolated linearly between the ODOM messages around it.
 Pose2 odometry_at(const std::vector<OdomSample>& odom, double t) {
   if (odom.empty()) return {};
-  auto hi = std::lower_bound(odom.begin(), odom.end(), t,
-                             [](const OdomSample& a, double v) { return a.t < v; });
+  auto hi = std::lower_bound(odom.begin(), odom.end(), t, [](const OdomSample& a, double v) { return a.t < v; });
   if (hi == odom.begin()) return odom.front().pose;
   if (hi == odom.end()) return odom.back().pose;
   const auto lo = hi - 1;
@@ -258,7 +260,8 @@ void read_lines(const std::string& path, const LogReadOptions& options, ReaderSt
   log.lines_read = reader.line_number();
   if (!pending) return;
   // A bad last line before any scan leaves nothing to keep: it is the error itself.
-  const bool any_scan = std::any_of(state.streams.begin(), state.streams.end(), [](const auto& st) { return !st.empty(); });
+  const bool any_scan =
+      std::any_of(state.streams.begin(), state.streams.end(), [](const auto& st) { return !st.empty(); });
   if (!any_scan) throw *pending;
   log.stopped_early = pending->what();
 }
@@ -287,8 +290,7 @@ LaserLog read_carmen_log(const std::string& path, const LogReadOptions& options)
 
 LaserLog read_laser_log(const std::string& path, const LogReadOptions& options) {
   const auto ends_with = [&](const std::string& suffix) {
-    return path.size() >= suffix.size() &&
-           path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
   if (ends_with(".rawlog") || ends_with(".rawlog.gz")) return read_mrpt_rawlog(path, options);
   if (ends_with(".bag")) return read_ros_bag(path, options);

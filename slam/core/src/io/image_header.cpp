@@ -46,18 +46,17 @@ std::int64_t big_endian32(const unsigned char* b) {
 
 }  // namespace
 
-void check_image_size(std::int64_t width, std::int64_t height, const std::string& context_file,
-                      std::size_t line, const std::string& key) {
+void check_image_size(std::int64_t width, std::int64_t height, const std::string& context_file, std::size_t line,
+                      const std::string& key) {
   const std::string value = std::to_string(width) + " x " + std::to_string(height);
   if (width <= 0 || height <= 0) throw ParseError(context_file, line, key, value, "image has no pixels");
   if (width > limits::kMaxImagePixels / height) {
-    throw ParseError(context_file, line, key, value,
-                     "image over 8192 x 8192 pixels (limits::kMaxImagePixels)");
+    throw ParseError(context_file, line, key, value, "image over 8192 x 8192 pixels (limits::kMaxImagePixels)");
   }
 }
 
-void check_image_header(const std::string& image_path, const std::string& context_file,
-                        std::size_t line, const std::string& key) {
+void check_image_header(const std::string& image_path, const std::string& context_file, std::size_t line,
+                        const std::string& key) {
   std::ifstream in(image_path, std::ios::binary);
   std::array<unsigned char, 24> head{};
   if (!in.read(reinterpret_cast<char*>(head.data()), 2)) return;  // the decoder reports it

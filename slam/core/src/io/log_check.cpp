@@ -124,22 +124,27 @@ void check_geometry(LogCheck& c, const LaserLog& log, const LogCheckOptions& o) 
   const Severity share = c.no_return_share > o.max_no_return_share ? Severity::kWarning : Severity::kNote;
   add(c, share, "no_returns",
       c.no_return_value > 0.0
-          ? fmt::format("{:.1f}% of readings are no-returns, most written as {:.2f} m (at or above the {:.2f} m max range)",
-                        100.0 * c.no_return_share, c.no_return_value, first.max_range)
+          ? fmt::format(
+                "{:.1f}% of readings are no-returns, most written as {:.2f} m (at or above the {:.2f} m max range)",
+                100.0 * c.no_return_share, c.no_return_value, first.max_range)
           : fmt::format("{:.1f}% of readings are no-returns", 100.0 * c.no_return_share));
   add(c, Severity::kNote, "laser_offset",
-      fmt::format("laser at x {:.3f} m, y {:.3f} m, yaw {:.2f} deg in the robot frame{}", c.laser_offset.x,
-                  c.laser_offset.y, c.laser_offset.theta * 180.0 / M_PI,
-                  c.laser_offset_spread > 1e-3 ? fmt::format(" (varies by up to {:.3f} m)", c.laser_offset_spread) : ""));
+      fmt::format(
+          "laser at x {:.3f} m, y {:.3f} m, yaw {:.2f} deg in the robot frame{}", c.laser_offset.x, c.laser_offset.y,
+          c.laser_offset.theta * 180.0 / M_PI,
+          c.laser_offset_spread > 1e-3 ? fmt::format(" (varies by up to {:.3f} m)", c.laser_offset_spread) : ""));
 }
 
 }  // namespace
 
 const char* to_string(Severity s) {
   switch (s) {
-    case Severity::kNote: return "note";
-    case Severity::kWarning: return "warning";
-    case Severity::kError: return "error";
+    case Severity::kNote:
+      return "note";
+    case Severity::kWarning:
+      return "warning";
+    case Severity::kError:
+      return "error";
   }
   return "?";
 }

@@ -26,8 +26,7 @@ T yaml_value(const YAML::Node& root, const char* key, const std::string& file) {
   try {
     return n.as<T>();
   } catch (const YAML::Exception&) {
-    throw ParseError(file, static_cast<std::size_t>(n.Mark().line + 1), key, YAML::Dump(n),
-                     "bad value");
+    throw ParseError(file, static_cast<std::size_t>(n.Mark().line + 1), key, YAML::Dump(n), "bad value");
   }
 }
 
@@ -129,8 +128,8 @@ OccupancyGrid to_occupancy_grid(const ProbabilityMap& map, GridOptions options) 
       const double p = map.at(x, y);
       if (p < 0) continue;
       const double q = std::clamp(p, 0.01, 0.99);
-      const CellIndex c = grid.cell_at(map.origin_x + (x + 0.5) * map.resolution,
-                                       map.origin_y + (y + 0.5) * map.resolution);
+      const CellIndex c =
+          grid.cell_at(map.origin_x + (x + 0.5) * map.resolution, map.origin_y + (y + 0.5) * map.resolution);
       grid.add_log_odds(c, static_cast<int>(std::lround(1000.0 * std::log(q / (1.0 - q)))));
     }
   }

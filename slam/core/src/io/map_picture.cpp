@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
 
 #include "lookahead/slam/io/parse_error.hpp"
 
@@ -28,15 +28,15 @@ cv::Mat render_occupancy(const ProbabilityMap& map, int scale) {
         const auto g = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - p)));
         v = {g, g, g};
       }
-      cv::rectangle(img, cv::Rect(x * scale, (map.height - 1 - y) * scale, scale, scale),
-                    cv::Scalar(v[0], v[1], v[2]), cv::FILLED);
+      cv::rectangle(img, cv::Rect(x * scale, (map.height - 1 - y) * scale, scale, scale), cv::Scalar(v[0], v[1], v[2]),
+                    cv::FILLED);
     }
   }
   return img;
 }
 
-void draw_legend(cv::Mat& img, const std::vector<PicturePath>& paths,
-                 const std::vector<PicturePoints>& points, const std::string& title, bool start) {
+void draw_legend(cv::Mat& img, const std::vector<PicturePath>& paths, const std::vector<PicturePoints>& points,
+                 const std::string& title, bool start) {
   const int line_h = 18;
   const int rows = static_cast<int>(paths.size() + points.size()) + (start ? 2 : 1);
   cv::rectangle(img, cv::Rect(0, 0, kLegendPanelWidth, std::max(img.rows, line_h * rows + 6)),
@@ -104,9 +104,8 @@ BgrImage render_map_picture(const ProbabilityMap& map, const std::vector<Picture
   return out;
 }
 
-void write_map_picture(const std::string& png_path, const ProbabilityMap& map,
-                       const std::vector<PicturePath>& paths, const std::string& title,
-                       const std::vector<PicturePoints>& points) {
+void write_map_picture(const std::string& png_path, const ProbabilityMap& map, const std::vector<PicturePath>& paths,
+                       const std::string& title, const std::vector<PicturePoints>& points) {
   if (map.width == 0 || map.height == 0) throw ParseError(png_path, 0, "", "", "empty map");
   BgrImage image = render_map_picture(map, paths, points, title);
   const cv::Mat img(image.height, image.width, CV_8UC3, image.pixels.data());

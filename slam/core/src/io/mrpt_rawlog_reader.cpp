@@ -2,15 +2,6 @@
 // Reads an MRPT .rawlog through MRPT's own deserialisation, in either of its two layouts:
 // action/sensory-frame pairs (odometry as increments) or a flat stream of observations
 // (odometry as absolute CObservationOdometry readings).
-#include <cmath>
-#include <cstddef>
-#include <exception>
-#include <filesystem>
-#include <limits>
-#include <memory>
-#include <string>
-#include <system_error>
-
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CActionCollection.h>
@@ -22,6 +13,15 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPosePDF.h>
 #include <mrpt/serialization/CArchive.h>
+
+#include <cmath>
+#include <cstddef>
+#include <exception>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <string>
+#include <system_error>
 
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/odometry_check.hpp"
@@ -81,8 +81,7 @@ class RawlogReader {
       // Some writers serialise a whole CRawlog as one object; its entries are the records.
       for (std::size_t i = 0; i < nested->size(); ++i) on_object(nested->getAsGeneric(i));
     } else {
-      throw BadRecord{"class", object->GetRuntimeClass()->className,
-                      "not an action, sensory frame or observation"};
+      throw BadRecord{"class", object->GetRuntimeClass()->className, "not an action, sensory frame or observation"};
     }
   }
 
@@ -136,8 +135,7 @@ class RawlogReader {
     scan.angle_min = -0.5 * obs.aperture;
     scan.angle_increment = obs.aperture / static_cast<double>(n - 1);
     scan.max_range = obs.maxRange;
-    scan.laser_offset = {obs.sensorPose.x(), obs.sensorPose.y(),
-                         normalize_angle(obs.sensorPose.yaw())};
+    scan.laser_offset = {obs.sensorPose.x(), obs.sensorPose.y(), normalize_angle(obs.sensorPose.yaw())};
     scan.odometry = odometry_;
     scan.source_line = record_;
     scan.ranges.resize(n);
@@ -160,8 +158,7 @@ class RawlogReader {
 };
 
 /// Books one bad record; returns normally only if the caller asked to skip bad records.
-void handle_bad(LaserLog& log, const LogReadOptions& options, std::size_t record,
-                const BadRecord& bad) {
+void handle_bad(LaserLog& log, const LogReadOptions& options, std::size_t record, const BadRecord& bad) {
   ParseError error(log.path, record, bad.field, bad.value, bad.reason);
   if (!options.skip_bad_lines) throw error;
   if (log.bad_lines == 0) log.first_bad_line_message = error.what();

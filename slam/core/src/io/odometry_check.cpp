@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/io/odometry_check.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <utility>
 #include <vector>
-
-#include <fmt/format.h>
 
 namespace lookahead::slam {
 namespace {
@@ -26,8 +26,8 @@ void check_odometry(LaserLog& log, const LogReadOptions& options) {
   for (LaserScan& scan : log.scans) {
     if (!finite(scan.odometry) || !std::isfinite(scan.timestamp)) {
       note(log.non_finite, log, scan,
-           fmt::format("odometry ({}, {}, {}) at t = {} is not finite; scan skipped", scan.odometry.x,
-                       scan.odometry.y, scan.odometry.theta, scan.timestamp));
+           fmt::format("odometry ({}, {}, {}) at t = {} is not finite; scan skipped", scan.odometry.x, scan.odometry.y,
+                       scan.odometry.theta, scan.timestamp));
       continue;
     }
     // Kept in log order: real logs carry such stamps (the corrected Intel log 4, the FLIRT
@@ -42,8 +42,8 @@ void check_odometry(LaserLog& log, const LogReadOptions& options) {
       const double step = last_raw.between(raw).norm();
       if (step > options.max_odometry_step) {
         note(log.odometry_jumps, log, scan,
-             fmt::format("odometry jumps {:.1f} m (limit max_odometry_step = {} m); motion model reset",
-                         step, options.max_odometry_step));
+             fmt::format("odometry jumps {:.1f} m (limit max_odometry_step = {} m); motion model reset", step,
+                         options.max_odometry_step));
         correction = kept.back().odometry.compose(raw.inverse());
       }
     }

@@ -6,8 +6,8 @@
 namespace lookahead::slam {
 namespace {
 
-std::string describe(const std::string& file, std::size_t line, const std::string& field,
-                     const std::string& value, const std::string& reason) {
+std::string describe(const std::string& file, std::size_t line, const std::string& field, const std::string& value,
+                     const std::string& reason) {
   std::string text = file;
   if (line > 0) text += ":" + std::to_string(line);
   text += ": " + reason;

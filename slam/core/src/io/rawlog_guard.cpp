@@ -165,8 +165,9 @@ bool under_address_sanitizer() {
     put_error(w, e);
   } catch (const std::bad_alloc&) {
     w = Writer{};
-    put_error(w, ParseError(path, 0, "", "", "the file claims more memory than the reader's limit of " +
-                                                  std::to_string(limits.memory_bytes >> 20) + " MB (corrupt?)"));
+    put_error(w, ParseError(path, 0, "", "",
+                            "the file claims more memory than the reader's limit of " +
+                                std::to_string(limits.memory_bytes >> 20) + " MB (corrupt?)"));
   } catch (const std::exception& e) {
     w = Writer{};
     put_error(w, ParseError(path, 0, "", "", std::string("cannot read: ") + e.what()));

@@ -4,18 +4,17 @@
 // frame for odometry, base -> laser for the mounting). sensor_msgs/LaserScan: beam i is at
 // angle_min + i * angle_increment; readings outside [range_min, range_max] or not finite
 // are no-returns.
+#include <fmt/format.h>
+#include <nav_msgs/Odometry.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
-
-#include <fmt/format.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
-#include <nav_msgs/Odometry.h>
-#include <sensor_msgs/LaserScan.h>
-#include <tf2_msgs/TFMessage.h>
 
 #include "bag_frames.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
@@ -75,7 +74,8 @@ std::string choose_scan_topic(const std::string& path, const Topics& t, const Ba
   if (scans.empty()) {
     std::vector<std::string> all;
     for (const auto& m : t.all) all.push_back(m.topic + " [" + m.type + "]");
-    throw ParseError(path, 0, "scan topic", "", "no sensor_msgs/LaserScan topic in the bag (topics: " + joined(all) + ")");
+    throw ParseError(path, 0, "scan topic", "",
+                     "no sensor_msgs/LaserScan topic in the bag (topics: " + joined(all) + ")");
   }
   if (scans.size() > 1) {
     throw ParseError(path, 0, "scan topic", joined(scans),
@@ -103,8 +103,7 @@ std::string choose_odom_topic(const std::string& path, const Topics& t, const Ba
 
 bool covered(const std::vector<TimedPose>& odom, double t, double gap) {
   if (odom.empty() || t < odom.front().t - gap || t > odom.back().t + gap) return false;
-  auto hi = std::lower_bound(odom.begin(), odom.end(), t,
-                             [](const TimedPose& a, double v) { return a.t < v; });
+  auto hi = std::lower_bound(odom.begin(), odom.end(), t, [](const TimedPose& a, double v) { return a.t < v; });
   if (hi == odom.begin() || hi == odom.end()) return true;  // within `gap` of an end
   return hi->t - (hi - 1)->t <= gap || hi->t == t;
 }
@@ -159,8 +158,8 @@ void read_scans(rosbag::Bag& bag, const ScanReadContext& c, LaserLog& log) {
       }
       log.scans_without_odometry += view.size() - index + 1;
       log.stopped_early = fmt::format(
-          "{}: no odometry from {} around t = {:.6f} s (scan {} of {} on {}); the {} scans before it are kept",
-          c.path, c.odometry_name, t, index, view.size(), c.topic, log.scans.size());
+          "{}: no odometry from {} around t = {:.6f} s (scan {} of {} on {}); the {} scans before it are kept", c.path,
+          c.odometry_name, t, index, view.size(), c.topic, log.scans.size());
       return;
     }
     LaserScan scan = to_scan(*m, t, c.options);
@@ -180,11 +179,14 @@ rosbag::Bag open_bag(const std::string& path) {
   try {
     bag.open(path, rosbag::bagmode::Read);
   } catch (const rosbag::BagUnindexedException&) {
-    throw ParseError(path, 0, "index", "", "the bag has no index (recording interrupted or file truncated); "
-                                           "`rosbag reindex` rebuilds it");
+    throw ParseError(path, 0, "index", "",
+                     "the bag has no index (recording interrupted or file truncated); "
+                     "`rosbag reindex` rebuilds it");
   } catch (const std::exception& e) {
-    throw ParseError(path, 0, "bag", "", std::string("cannot open as a ROS1 bag (a truncated recording: `rosbag reindex` "
-                                                     "rebuilds it): ") + e.what());
+    throw ParseError(path, 0, "bag", "",
+                     std::string("cannot open as a ROS1 bag (a truncated recording: `rosbag reindex` "
+                                 "rebuilds it): ") +
+                         e.what());
   }
   return bag;
 }
@@ -202,9 +204,8 @@ LaserLog read_ros_bag(const std::string& path, const LogReadOptions& options) {
     const std::string odom_topic = choose_odom_topic(path, topics, options.bag);
     BagFrames frames = read_frames(bag, path, odom_topic, options.bag);
     log.odometry_source = frames.odometry_name;
-    const std::string laser_frame = options.bag.laser_frame.empty()
-                                        ? first_scan_frame(bag, log.scan_source)
-                                        : options.bag.laser_frame;
+    const std::string laser_frame =
+        options.bag.laser_frame.empty() ? first_scan_frame(bag, log.scan_source) : options.bag.laser_frame;
     const Pose2 offset = laser_mounting(bag, path, frames.base_frame, laser_frame);
     read_scans(bag, {path, log.scan_source, options, frames.odometry, frames.odometry_name, offset}, log);
   } catch (const ParseError&) {

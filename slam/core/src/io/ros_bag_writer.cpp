@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/io/ros_bag_writer.hpp"
 
-#include <algorithm>
-
-#include <rosbag/bag.h>
-
-#include <cmath>
 #include <nav_msgs/Odometry.h>
+#include <rosbag/bag.h>
 #include <sensor_msgs/LaserScan.h>
 #include <tf2_msgs/TFMessage.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include "lookahead/slam/io/parse_error.hpp"
 
@@ -77,7 +76,8 @@ void RosBagWriter::odometry(double t, const Pose2& pose) {
   const BagWriteOptions& o = impl_->options;
   const ros::Time stamp(t);
   if (!o.odom_topic.empty()) {
-    impl_->bag.write(o.odom_topic, std::max(stamp, ros::TIME_MIN), odometry_message(stamp, o.odom_frame, o.base_frame, pose));
+    impl_->bag.write(o.odom_topic, std::max(stamp, ros::TIME_MIN),
+                     odometry_message(stamp, o.odom_frame, o.base_frame, pose));
   }
   if (o.odometry_on_tf) {
     tf2_msgs::TFMessage tf;

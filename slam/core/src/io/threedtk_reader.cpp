@@ -49,18 +49,15 @@ Pose3 read_pose(const std::string& path) {
   int found = 0;
   while (found < 2 && reader.next(line)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    values[found] =
-        three_numbers(line, path, reader.line_number(), found == 0 ? kPosition : kAngles);
+    values[found] = three_numbers(line, path, reader.line_number(), found == 0 ? kPosition : kAngles);
     ++found;
   }
-  if (found < 2)
-    throw ParseError(path, reader.line_number(), found == 0 ? "x" : "theta_x", "",
-                     "pose file ends early");
+  if (found < 2) throw ParseError(path, reader.line_number(), found == 0 ? "x" : "theta_x", "", "pose file ends early");
   const Eigen::Vector3d a = values[1] * (M_PI / 180.0);
-  const Eigen::Matrix3d r3 = (Eigen::AngleAxisd(a.y(), Eigen::Vector3d::UnitY()) *
-                              Eigen::AngleAxisd(a.x(), Eigen::Vector3d::UnitX()) *
-                              Eigen::AngleAxisd(a.z(), Eigen::Vector3d::UnitZ()))
-                                 .toRotationMatrix();
+  const Eigen::Matrix3d r3 =
+      (Eigen::AngleAxisd(a.y(), Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(a.x(), Eigen::Vector3d::UnitX()) *
+       Eigen::AngleAxisd(a.z(), Eigen::Vector3d::UnitZ()))
+          .toRotationMatrix();
   const Eigen::Matrix3d p = from_3dtk();
   Pose3 pose = Pose3::Identity();
   pose.linear() = p * r3 * p.transpose();
@@ -70,8 +67,7 @@ Pose3 read_pose(const std::string& path) {
 
 }  // namespace
 
-RangeSweep read_3dtk_scan(const std::string& scan_path, const std::string& pose_path,
-                          const ThreeDtkOptions& options) {
+RangeSweep read_3dtk_scan(const std::string& scan_path, const std::string& pose_path, const ThreeDtkOptions& options) {
   if (options.point_step < 1) throw std::invalid_argument("3dtk: point_step must be >= 1");
   static const char* const kPoint[3] = {"x", "y", "z"};
   RangeSweep sweep;
@@ -82,8 +78,7 @@ RangeSweep read_3dtk_scan(const std::string& scan_path, const std::string& pose_
   std::size_t index = 0;
   while (reader.next(line)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const Eigen::Vector3d point =
-        p * three_numbers(line, scan_path, reader.line_number(), kPoint) * kCentimetre;
+    const Eigen::Vector3d point = p * three_numbers(line, scan_path, reader.line_number(), kPoint) * kCentimetre;
     if (index++ % static_cast<std::size_t>(options.point_step) != 0) continue;
     const double range = point.norm();
     if (range <= 0.0) continue;  // a point at the sensor says nothing

@@ -28,8 +28,8 @@ std::vector<StampedPose> read_trajectory(const std::string& path) {
     if (first == std::string::npos || line[first] == '#') continue;
     const carmen::Fields f(path, reader.line_number(), line);
     if (f.size() != 4) f.fail("fields", std::to_string(f.size()), "expected 'timestamp x y theta'");
-    poses.push_back({f.number(0, "timestamp"),
-                     {f.number(1, "x"), f.number(2, "y"), normalize_angle(f.number(3, "theta"))}});
+    poses.push_back(
+        {f.number(0, "timestamp"), {f.number(1, "x"), f.number(2, "y"), normalize_angle(f.number(3, "theta"))}});
   }
   return poses;
 }

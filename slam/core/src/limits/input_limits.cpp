@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/limits/input_limits.hpp"
 
+#include <fmt/format.h>
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <fstream>
 #include <limits>
 #include <sstream>
-
-#include <fmt/format.h>
 
 namespace lookahead::slam::limits {
 namespace {
@@ -42,8 +41,8 @@ std::uint64_t available_memory_bytes() {
 void check_memory(double bytes, const std::string& what) {
   const auto available = static_cast<double>(available_memory_bytes());
   if (bytes <= available) return;
-  throw ResourceLimitError(fmt::format("{} need about {}, more than the {} this machine has available",
-                                       what, gigabytes(bytes), gigabytes(available)));
+  throw ResourceLimitError(fmt::format("{} need about {}, more than the {} this machine has available", what,
+                                       gigabytes(bytes), gigabytes(available)));
 }
 
 }  // namespace lookahead::slam::limits

@@ -21,8 +21,7 @@ PreparedScan prepare_scan(const LaserScan& scan, const LikelihoodOptions& option
   return p;
 }
 
-LikelihoodFieldModel::LikelihoodFieldModel(const LikelihoodOptions& options,
-                                           const OccupancyGrid& like_grid)
+LikelihoodFieldModel::LikelihoodFieldModel(const LikelihoodOptions& options, const OccupancyGrid& like_grid)
     : options_(options) {
   if (!(options.sigma > 0) || !(options.random_floor > 0 && options.random_floor < 1) ||
       !(options.unknown_likelihood > 0) || !(options.temperature > 0)) {
@@ -36,8 +35,8 @@ LikelihoodFieldModel::LikelihoodFieldModel(const LikelihoodOptions& options,
   for (int d2 = 0; d2 < 256; ++d2) {
     // Beyond the field radius the distance is unknown but large: score it at the radius.
     const double dist2_m = static_cast<double>(std::min(d2, r2)) * res * res;
-    const double p = (1.0 - options.random_floor) * std::exp(-dist2_m / (2 * options.sigma * options.sigma)) +
-                     options.random_floor;
+    const double p =
+        (1.0 - options.random_floor) * std::exp(-dist2_m / (2 * options.sigma * options.sigma)) + options.random_floor;
     log_by_dist2_[static_cast<std::size_t>(d2)] = options.temperature * std::log(p);
   }
   log_unknown_ = options.temperature * std::log(options.unknown_likelihood);
@@ -55,8 +54,7 @@ double LikelihoodFieldModel::log_likelihood(const OccupancyGrid& grid, const Pos
   for (std::size_t i = 0; i < scan.x.size(); ++i) {
     const double wx = laser.x + c * scan.x[i] - s * scan.y[i];
     const double wy = laser.y + s * scan.x[i] + c * scan.y[i];
-    const CellIndex cell{static_cast<int>(std::floor(wx * inv_res)),
-                         static_cast<int>(std::floor(wy * inv_res))};
+    const CellIndex cell{static_cast<int>(std::floor(wx * inv_res)), static_cast<int>(std::floor(wy * inv_res))};
     const GridTile* t = grid.tile(cell.x >> GridTile::kBits, cell.y >> GridTile::kBits);
     if (t == nullptr) {
       sum += log_unknown_;
@@ -71,23 +69,22 @@ double LikelihoodFieldModel::log_likelihood(const OccupancyGrid& grid, const Pos
   return sum;
 }
 
-double LikelihoodFieldModel::hit_ratio(const OccupancyGrid& grid, const Pose2& robot,
-                                       const PreparedScan& scan) const {
+double LikelihoodFieldModel::hit_ratio(const OccupancyGrid& grid, const Pose2& robot, const PreparedScan& scan) const {
   if (scan.x.empty()) return 0.0;
   const Pose2 laser = robot.compose(scan.laser_offset);
   const double c = std::cos(laser.theta);
   const double s = std::sin(laser.theta);
   std::size_t hits = 0;
   for (std::size_t i = 0; i < scan.x.size(); ++i) {
-    const CellIndex cell = grid.cell_at(laser.x + c * scan.x[i] - s * scan.y[i],
-                                        laser.y + s * scan.x[i] + c * scan.y[i]);
+    const CellIndex cell =
+        grid.cell_at(laser.x + c * scan.x[i] - s * scan.y[i], laser.y + s * scan.x[i] + c * scan.y[i]);
     hits += grid.dist2(cell) <= hit_dist2_ ? 1 : 0;
   }
   return static_cast<double>(hits) / static_cast<double>(scan.x.size());
 }
 
-double LikelihoodFieldModel::end_point_log_likelihood(const OccupancyGrid& grid, double wx,
-                                                      double wy, bool& hit) const {
+double LikelihoodFieldModel::end_point_log_likelihood(const OccupancyGrid& grid, double wx, double wy,
+                                                      bool& hit) const {
   const CellIndex cell = grid.cell_at(wx, wy);
   const int d2 = grid.dist2(cell);
   hit = d2 <= hit_dist2_;

@@ -51,8 +51,8 @@ bool miss_changes(const GridTile* t, int i, int floor) {
          (t->flags[i] & (GridTile::kObstacle | GridTile::kHitThisScan)) != 0;
 }
 
-std::vector<BeamEnd> beam_ends(const OccupancyGrid& grid, const Pose2& laser,
-                               const LaserScan& scan, const InsertOptions& options) {
+std::vector<BeamEnd> beam_ends(const OccupancyGrid& grid, const Pose2& laser, const LaserScan& scan,
+                               const InsertOptions& options) {
   const double usable = options.max_usable_range;
   std::vector<BeamEnd> ends;
   ends.reserve(scan.ranges.size());
@@ -62,16 +62,15 @@ std::vector<BeamEnd> beam_ends(const OccupancyGrid& grid, const Pose2& laser,
     const double r = clear ? std::min(scan.max_range, usable) : std::min<double>(scan.ranges[i], usable);
     const double a = laser.theta + scan.bearing(i);
     const double x = laser.x + r * std::cos(a), y = laser.y + r * std::sin(a);
-    ends.push_back({grid.cell_at(x, y), !clear && scan.ranges[i] < usable, x / grid.resolution(),
-                    y / grid.resolution()});
+    ends.push_back(
+        {grid.cell_at(x, y), !clear && scan.ranges[i] < usable, x / grid.resolution(), y / grid.resolution()});
   }
   return ends;
 }
 
 }  // namespace
 
-void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan,
-                 const InsertOptions& options) {
+void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan, const InsertOptions& options) {
   const Pose2 laser = robot.compose(scan.laser_offset);
   const CellIndex origin = grid.cell_at(laser.x, laser.y);
   const std::vector<BeamEnd> ends = beam_ends(grid, laser, scan, options);

@@ -47,8 +47,8 @@ void walk(const NodeBase* n, int level, int x, int y, int z, const Visit& visit)
   const auto* inner = static_cast<const InnerNode*>(n);
   for (int i = 0; i < 8; ++i) {
     if (!inner->child[i]) continue;
-    walk(inner->child[i], level + 1, x | ((i & 1) << bit), y | (((i >> 1) & 1) << bit),
-         z | (((i >> 2) & 1) << bit), visit);
+    walk(inner->child[i], level + 1, x | ((i & 1) << bit), y | (((i >> 1) & 1) << bit), z | (((i >> 2) & 1) << bit),
+         visit);
   }
 }
 
@@ -71,9 +71,7 @@ void walk_unshared(const NodeBase* n, const NodeBase* base, int level, int x, in
   }
 }
 
-std::size_t node_bytes(int level) {
-  return level == kInnerLevels ? sizeof(Brick) : sizeof(InnerNode);
-}
+std::size_t node_bytes(int level) { return level == kInnerLevels ? sizeof(Brick) : sizeof(InnerNode); }
 
 }  // namespace
 
@@ -85,8 +83,7 @@ void OctreeOptions::validate() const {
   require(log_odds_hit > 0.0, "log_odds_hit must be > 0");
   require(log_odds_miss < 0.0, "log_odds_miss must be < 0");
   require(log_odds_min < log_odds_max, "log_odds_min must be < log_odds_max");
-  require(occupied_above > log_odds_min && occupied_above < log_odds_max,
-          "occupied_above must lie between the clamps");
+  require(occupied_above > log_odds_min && occupied_above < log_odds_max, "occupied_above must lie between the clamps");
 }
 
 EvidenceOctree::EvidenceOctree(const OctreeOptions& options)
@@ -146,8 +143,7 @@ void EvidenceOctree::for_each_voxel(const std::function<void(const OctreeKey&, f
     const auto* b = static_cast<const Brick*>(n);
     for (int v = 0; v < octree_detail::kBrickVoxels; ++v) {
       if (!((b->known >> v) & 1U)) continue;
-      const OctreeKey k{static_cast<std::uint16_t>(x | (v & 3)),
-                        static_cast<std::uint16_t>(y | ((v >> 2) & 3)),
+      const OctreeKey k{static_cast<std::uint16_t>(x | (v & 3)), static_cast<std::uint16_t>(y | ((v >> 2) & 3)),
                         static_cast<std::uint16_t>(z | ((v >> 4) & 3))};
       f(k, b->log_odds[static_cast<std::size_t>(v)]);
     }
@@ -173,16 +169,15 @@ void EvidenceOctree::for_each_voxel_not_shared_with(
       const OctreeKey k{static_cast<std::uint16_t>(x | (v & 3)), static_cast<std::uint16_t>(y | ((v >> 2) & 3)),
                         static_cast<std::uint16_t>(z | ((v >> 4) & 3))};
       const auto i = static_cast<std::size_t>(v);
-      f(k, b->log_odds[i], other && ((other->known >> v) & 1U) ? std::optional<float>(other->log_odds[i]) : std::nullopt);
+      f(k, b->log_odds[i],
+        other && ((other->known >> v) & 1U) ? std::optional<float>(other->log_odds[i]) : std::nullopt);
     }
   });
 }
 
 void EvidenceOctree::update(const OctreeKey& k, bool hit) { OctreeWriter(*this).update(k, hit); }
 
-void EvidenceOctree::set_log_odds(const OctreeKey& k, float log_odds) {
-  OctreeWriter(*this).set_log_odds(k, log_odds);
-}
+void EvidenceOctree::set_log_odds(const OctreeKey& k, float log_odds) { OctreeWriter(*this).set_log_odds(k, log_odds); }
 
 OctreeMemory EvidenceOctree::memory() const {
   OctreeMemory m;
@@ -223,12 +218,10 @@ const Brick* OctreeReader::brick_at(int x, int y, int z) {
   const int ax = x >> octree_detail::kAnchorShift, ay = y >> octree_detail::kAnchorShift,
             az = z >> octree_detail::kAnchorShift;
   if (ax != anchor_x_ || ay != anchor_y_ || az != anchor_z_) {
-    anchor_ = static_cast<const InnerNode*>(
-        descend(map_->root_, 0, octree_detail::kAnchorLevel, x, y, z));
+    anchor_ = static_cast<const InnerNode*>(descend(map_->root_, 0, octree_detail::kAnchorLevel, x, y, z));
     anchor_x_ = ax, anchor_y_ = ay, anchor_z_ = az;
   }
-  cached_ = static_cast<const Brick*>(
-      descend(anchor_, octree_detail::kAnchorLevel, kInnerLevels, x, y, z));
+  cached_ = static_cast<const Brick*>(descend(anchor_, octree_detail::kAnchorLevel, kInnerLevels, x, y, z));
   cached_x_ = bx, cached_y_ = by, cached_z_ = bz;
   return cached_;
 }
@@ -262,19 +255,16 @@ Brick& OctreeWriter::brick_at(const OctreeKey& k) {
     InnerNode* node = make_private<InnerNode>(root, 0);
     map_->root_ = node;
     for (int level = 0; level < octree_detail::kAnchorLevel; ++level) {
-      node = make_private<InnerNode>(node->child[octree_detail::child_index(k.x, k.y, k.z, level)],
-                                     level + 1);
+      node = make_private<InnerNode>(node->child[octree_detail::child_index(k.x, k.y, k.z, level)], level + 1);
     }
     anchor_ = node;
     anchor_x_ = ax, anchor_y_ = ay, anchor_z_ = az;
   }
   InnerNode* node = anchor_;
   for (int level = octree_detail::kAnchorLevel; level + 1 < kInnerLevels; ++level) {
-    node = make_private<InnerNode>(node->child[octree_detail::child_index(k.x, k.y, k.z, level)],
-                                   level + 1);
+    node = make_private<InnerNode>(node->child[octree_detail::child_index(k.x, k.y, k.z, level)], level + 1);
   }
-  cached_ = make_private<Brick>(
-      node->child[octree_detail::child_index(k.x, k.y, k.z, kInnerLevels - 1)], kInnerLevels);
+  cached_ = make_private<Brick>(node->child[octree_detail::child_index(k.x, k.y, k.z, kInnerLevels - 1)], kInnerLevels);
   cached_x_ = bx, cached_y_ = by, cached_z_ = bz;
   return *cached_;
 }

@@ -13,9 +13,7 @@
 namespace lookahead::slam {
 namespace {
 
-bool has_extension(const std::string& path, const char* ext) {
-  return std::filesystem::path(path).extension() == ext;
-}
+bool has_extension(const std::string& path, const char* ext) { return std::filesystem::path(path).extension() == ext; }
 
 double log_odds_of(double p) { return std::log(p / (1.0 - p)); }
 
@@ -24,8 +22,7 @@ std::unique_ptr<octomap::OcTree> load_tree(const std::string& path) {
   if (has_extension(path, ".bt")) {
     std::ifstream in(path, std::ios::binary);
     auto tree = std::make_unique<octomap::OcTree>(0.1);
-    if (!tree->readBinary(in))
-      throw ParseError(path, 0, "", "", "not an OctoMap binary (.bt) OcTree");
+    if (!tree->readBinary(in)) throw ParseError(path, 0, "", "", "not an OctoMap binary (.bt) OcTree");
     return tree;
   }
   if (has_extension(path, ".ot")) {
@@ -35,8 +32,7 @@ std::unique_ptr<octomap::OcTree> load_tree(const std::string& path) {
     any.release();
     return std::unique_ptr<octomap::OcTree>(tree);
   }
-  throw ParseError(path, 0, "extension", std::filesystem::path(path).extension().string(),
-                   "expected .bt or .ot");
+  throw ParseError(path, 0, "extension", std::filesystem::path(path).extension().string(), "expected .bt or .ot");
 }
 
 }  // namespace
@@ -61,10 +57,9 @@ EvidenceOctree read_octomap(const std::string& path) {
     for (int dz = 0; dz < side; ++dz)
       for (int dy = 0; dy < side; ++dy)
         for (int dx = 0; dx < side; ++dx)
-          writer.set_log_odds(
-              {static_cast<std::uint16_t>(base[0] + dx), static_cast<std::uint16_t>(base[1] + dy),
-               static_cast<std::uint16_t>(base[2] + dz)},
-              value);
+          writer.set_log_odds({static_cast<std::uint16_t>(base[0] + dx), static_cast<std::uint16_t>(base[1] + dy),
+                               static_cast<std::uint16_t>(base[2] + dz)},
+                              value);
   }
   return map;
 }

@@ -29,8 +29,8 @@ double octree_log_likelihood(const EvidenceOctree& map, const std::vector<Eigen:
     for (long dz = -1; dz <= 1; ++dz) {
       for (long dy = -1; dy <= 1; ++dy) {
         for (long dx = -1; dx <= 1; ++dx) {
-          const std::optional<float> l = reader.log_odds(
-              static_cast<int>(kx + dx), static_cast<int>(ky + dy), static_cast<int>(kz + dz));
+          const std::optional<float> l =
+              reader.log_odds(static_cast<int>(kx + dx), static_cast<int>(ky + dy), static_cast<int>(kz + dz));
           if (!l) continue;
           any_known = true;
           if (*l <= occupied_above) continue;

@@ -7,8 +7,7 @@
 
 namespace lookahead::slam {
 
-ProbabilityMap top_view(const EvidenceOctree& map, double wall_height, int margin_cells,
-                        int upsample) {
+ProbabilityMap top_view(const EvidenceOctree& map, double wall_height, int margin_cells, int upsample) {
   struct Column {
     int occupied = 0;
     bool free = false;
@@ -39,15 +38,13 @@ ProbabilityMap top_view(const EvidenceOctree& map, double wall_height, int margi
   out.origin_x = map.grid().axis_centre(x0) - 0.5 * map.grid().resolution();
   out.origin_y = map.grid().axis_centre(y0) - 0.5 * map.grid().resolution();
   out.p.assign(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height), 0.5);
-  const int wall_voxels =
-      std::max(1, static_cast<int>(wall_height / map.grid().resolution() + 0.5));
+  const int wall_voxels = std::max(1, static_cast<int>(wall_height / map.grid().resolution() + 0.5));
   for (const auto& [xy, c] : columns) {
     if (c.occupied < wall_voxels && !c.free) continue;
     const double value = c.occupied >= wall_voxels ? 1.0 : 0.0;
     for (int dy = 0; dy < f; ++dy)
       for (int dx = 0; dx < f; ++dx)
-        out.p[static_cast<std::size_t>(((xy.second - y0) * f + dy) * out.width +
-                                       (xy.first - x0) * f + dx)] = value;
+        out.p[static_cast<std::size_t>(((xy.second - y0) * f + dy) * out.width + (xy.first - x0) * f + dx)] = value;
   }
   return out;
 }

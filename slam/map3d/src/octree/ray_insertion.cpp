@@ -24,11 +24,8 @@ std::uint64_t pack(const OctreeKey& k) {
 
 OctreeKey unpack(std::uint64_t p) {
   const auto v = static_cast<int>(p & 63U);
-  const auto brick = [&](int shift) {
-    return static_cast<int>((p >> shift) & 0x3FFFU) << kBrickBits;
-  };
-  return {static_cast<std::uint16_t>(brick(34) | (v & 3)),
-          static_cast<std::uint16_t>(brick(20) | ((v >> 2) & 3)),
+  const auto brick = [&](int shift) { return static_cast<int>((p >> shift) & 0x3FFFU) << kBrickBits; };
+  return {static_cast<std::uint16_t>(brick(34) | (v & 3)), static_cast<std::uint16_t>(brick(20) | ((v >> 2) & 3)),
           static_cast<std::uint16_t>(brick(6) | ((v >> 4) & 3))};
 }
 
@@ -68,8 +65,7 @@ void trace_voxels(const OctreeGrid& grid, const Eigen::Vector3d& from, const Eig
   VoxelWalk walk(grid, from, delta / length);
   const long goal[3] = {stop->x, stop->y, stop->z};
   // At most one voxel per boundary crossed; the bound guards against rounding at the goal.
-  const long max_steps =
-      std::abs(goal[0] - start->x) + std::abs(goal[1] - start->y) + std::abs(goal[2] - start->z);
+  const long max_steps = std::abs(goal[0] - start->x) + std::abs(goal[1] - start->y) + std::abs(goal[2] - start->z);
   for (long i = 0; i < max_steps; ++i) {
     out.push_back({static_cast<std::uint16_t>(walk.key(0)), static_cast<std::uint16_t>(walk.key(1)),
                    static_cast<std::uint16_t>(walk.key(2))});
@@ -79,8 +75,7 @@ void trace_voxels(const OctreeGrid& grid, const Eigen::Vector3d& from, const Eig
   }
 }
 
-RayVoxels collect_ray_voxels(const OctreeGrid& grid, const std::vector<Ray3>& rays,
-                             const RayInsertOptions& options) {
+RayVoxels collect_ray_voxels(const OctreeGrid& grid, const std::vector<Ray3>& rays, const RayInsertOptions& options) {
   std::vector<OctreeKey> trace;
   std::vector<std::uint64_t> free, occupied;
   for (const Ray3& r : rays) {
@@ -91,8 +86,7 @@ RayVoxels collect_ray_voxels(const OctreeGrid& grid, const std::vector<Ray3>& ra
       trace_voxels(grid, r.origin, r.end, trace);
       if (const auto k = grid.key_of(r.end)) occupied.push_back(pack(*k));
     } else if (length > 0.0) {
-      trace_voxels(grid, r.origin, r.origin + d * (std::min(length, options.max_range) / length),
-                   trace);
+      trace_voxels(grid, r.origin, r.origin + d * (std::min(length, options.max_range) / length), trace);
     }
     for (const OctreeKey& k : trace) free.push_back(pack(k));
   }
@@ -104,15 +98,13 @@ RayVoxels collect_ray_voxels(const OctreeGrid& grid, const std::vector<Ray3>& ra
   // Occupied wins: a voxel that one beam ends in is not also cleared by another.
   std::vector<std::uint64_t> only_free;
   only_free.reserve(free.size());
-  std::set_difference(free.begin(), free.end(), occupied.begin(), occupied.end(),
-                      std::back_inserter(only_free));
+  std::set_difference(free.begin(), free.end(), occupied.begin(), occupied.end(), std::back_inserter(only_free));
   out.free.reserve(only_free.size());
   for (std::uint64_t p : only_free) out.free.push_back(unpack(p));
   return out;
 }
 
-void insert_rays(EvidenceOctree& map, const std::vector<Ray3>& rays,
-                 const RayInsertOptions& options) {
+void insert_rays(EvidenceOctree& map, const std::vector<Ray3>& rays, const RayInsertOptions& options) {
   const RayVoxels voxels = collect_ray_voxels(map.grid(), rays, options);
   OctreeWriter writer(map);
   for (const OctreeKey& k : voxels.free) writer.update(k, false);

@@ -23,8 +23,7 @@ class VoxelWalk {
         next_[a] = delta_[a] = std::numeric_limits<double>::infinity();
         continue;
       }
-      const double boundary =
-          grid.axis_centre(static_cast<int>(key_[a])) + 0.5 * grid.resolution() * step_[a];
+      const double boundary = grid.axis_centre(static_cast<int>(key_[a])) + 0.5 * grid.resolution() * step_[a];
       next_[a] = (boundary - from[a]) / dir[a];
       delta_[a] = grid.resolution() / std::abs(dir[a]);
     }

@@ -24,8 +24,7 @@ Trajectory3Node::~Trajectory3Node() {
   std::shared_ptr<const Trajectory3Node> next = std::move(parent);
   while (next && next.use_count() == 1) {
     // Steal the parent's link before `next` dies, so its destructor finds nothing to free.
-    std::shared_ptr<const Trajectory3Node> up =
-        std::move(const_cast<Trajectory3Node&>(*next).parent);
+    std::shared_ptr<const Trajectory3Node> up = std::move(const_cast<Trajectory3Node&>(*next).parent);
     next = std::move(up);
   }
 }
@@ -36,8 +35,7 @@ void Rbpf3dOptions::validate() const {
   };
   require(particles >= 1 && particles <= 100000, "particles must be in 1..100000");
   require(threads >= 0, "threads must be >= 0");
-  require(resample_threshold > 0.0 && resample_threshold <= 1.0,
-          "resample_threshold must be in (0, 1]");
+  require(resample_threshold > 0.0 && resample_threshold <= 1.0, "resample_threshold must be in (0, 1]");
   require(weight_exponent > 0.0, "weight_exponent must be > 0");
   require(likelihood_ray_step >= 1 && insert_ray_step >= 1, "ray steps must be >= 1");
   require(insert.max_range > 0.0, "insert max_range must be > 0");
@@ -48,13 +46,9 @@ void Rbpf3dOptions::validate() const {
   likelihood.validate();
 }
 
-Rbpf3d::Rbpf3d(const Rbpf3dOptions& options) : options_(options), rng_(options.seed) {
-  options_.validate();
-}
+Rbpf3d::Rbpf3d(const Rbpf3dOptions& options) : options_(options), rng_(options.seed) { options_.validate(); }
 
-int Rbpf3d::thread_count() const {
-  return options_.threads > 0 ? options_.threads : omp_get_num_procs();
-}
+int Rbpf3d::thread_count() const { return options_.threads > 0 ? options_.threads : omp_get_num_procs(); }
 
 void Rbpf3d::add_sweep(const RangeSweep& sweep) {
   if (particles_.empty()) {
@@ -92,8 +86,7 @@ void Rbpf3d::predict_and_weigh(const RangeSweep& sweep) {
       p.pose = sample_motion3(p.pose, increment, imu, yaw_change, options_.motion, rng);
       std::vector<Eigen::Vector3d> world(ends.size());
       for (std::size_t k = 0; k < ends.size(); ++k) world[k] = p.pose * ends[k];
-      p.log_weight +=
-          options_.weight_exponent * octree_log_likelihood(p.map, world, options_.likelihood);
+      p.log_weight += options_.weight_exponent * octree_log_likelihood(p.map, world, options_.likelihood);
     });
   }
   errors.rethrow();
@@ -120,8 +113,7 @@ void Rbpf3d::resample_if_needed() {
 void Rbpf3d::insert(const RangeSweep& sweep) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<Ray3> local;
-  for (std::size_t i = 0; i < sweep.rays.size();
-       i += static_cast<std::size_t>(options_.insert_ray_step)) {
+  for (std::size_t i = 0; i < sweep.rays.size(); i += static_cast<std::size_t>(options_.insert_ray_step)) {
     local.push_back(sweep.rays[i]);
   }
   ParallelErrors errors;
@@ -154,15 +146,13 @@ Eigen::Vector3d Rbpf3d::mean_position() const {
   for (const Particle3& p : particles_) log_w.push_back(p.log_weight);
   const std::vector<double> w = normalized_weights(log_w);
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (std::size_t i = 0; i < particles_.size(); ++i)
-    mean += w[i] * particles_[i].pose.translation();
+  for (std::size_t i = 0; i < particles_.size(); ++i) mean += w[i] * particles_[i].pose.translation();
   return mean;
 }
 
 std::vector<Pose3> Rbpf3d::trajectory(std::size_t particle) const {
   std::vector<Pose3> poses;
-  for (const Trajectory3Node* n = particles_.at(particle).trajectory.get(); n;
-       n = n->parent.get()) {
+  for (const Trajectory3Node* n = particles_.at(particle).trajectory.get(); n; n = n->parent.get()) {
     poses.push_back(n->pose);
   }
   return {poses.rbegin(), poses.rend()};

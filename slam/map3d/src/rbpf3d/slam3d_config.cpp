@@ -32,8 +32,7 @@ void visit_sections(Slam3dOptions& o, V&& v) {
   v.section("likelihood");
   v("sigma", f.likelihood.sigma, "end point std around a surface [m]");
   v("random_floor", f.likelihood.random_floor, "likelihood of an unexplained end point");
-  v("unknown_likelihood", f.likelihood.unknown_likelihood,
-    "likelihood of an end point in unknown space");
+  v("unknown_likelihood", f.likelihood.unknown_likelihood, "likelihood of an end point in unknown space");
   v.section("motion");
   v("xy_per_metre", f.motion.xy_per_metre, "x, y std per metre travelled [m/m]");
   v("z_per_metre", f.motion.z_per_metre, "z std per metre [m/m]");
@@ -52,8 +51,7 @@ void visit_sections(Slam3dOptions& o, V&& v) {
   v("max_range", r.laser.max_range, "laser range [m]");
   v("range_sigma", r.laser.range_sigma, "range noise std [m]");
   v("mount_height", r.laser.mount_height, "laser above the base [m]");
-  v("speed_scale_sigma", r.dead_reckoning.speed_scale_sigma,
-    "odometry scale error std (once per run)");
+  v("speed_scale_sigma", r.dead_reckoning.speed_scale_sigma, "odometry scale error std (once per run)");
   v("speed_noise", r.dead_reckoning.speed_noise, "speed noise [m/s]");
   v("yaw_bias", r.dead_reckoning.yaw_bias, "gyro yaw bias [rad/s]");
   v("yaw_rate_noise", r.dead_reckoning.yaw_rate_noise, "yaw-rate noise [rad/s]");
@@ -65,8 +63,7 @@ void visit_sections(Slam3dOptions& o, V&& v) {
 
 }  // namespace
 
-Slam3dOptions parse_slam3d_options(const std::string& yaml, const std::string& source,
-                                   const Slam3dOptions& base) {
+Slam3dOptions parse_slam3d_options(const std::string& yaml, const std::string& source, const Slam3dOptions& base) {
   const YAML::Node root = config::parse_sections(yaml, source);
   Slam3dOptions o = base;
   if (root.IsNull()) return o;
@@ -77,8 +74,7 @@ Slam3dOptions parse_slam3d_options(const std::string& yaml, const std::string& s
     o.filter.validate();
     o.robot.validate();
     if (o.threedtk.point_step < 1) throw std::invalid_argument("threedtk: point_step must be >= 1");
-    if (!(o.world_resolution > 0.0))
-      throw std::invalid_argument("robot: world_resolution must be > 0");
+    if (!(o.world_resolution > 0.0)) throw std::invalid_argument("robot: world_resolution must be > 0");
   } catch (const std::invalid_argument& e) {
     loader.fail_impossible(e.what());
   }

@@ -28,8 +28,7 @@ class DeadReckoning {
     const double distance = truth.distance * scale_ + o_.speed_noise * dt * unit(rng_);
     yaw_ += truth.yaw_change + (o_.yaw_bias + o_.yaw_rate_noise * unit(rng_)) * dt;
     const Euler tilt = euler_of(truth.pose.linear());
-    const Euler imu{tilt.roll + o_.tilt_sigma * unit(rng_), tilt.pitch + o_.tilt_sigma * unit(rng_),
-                    yaw_};
+    const Euler imu{tilt.roll + o_.tilt_sigma * unit(rng_), tilt.pitch + o_.tilt_sigma * unit(rng_), yaw_};
     const Pose3 pose = make_pose3(position_, imu);
     position_ += pose.linear() * Eigen::Vector3d(distance, 0.0, 0.0);
     return make_pose3(position_, imu);
@@ -56,8 +55,8 @@ struct Line {
 
 /// One sweep: cast every beam of every line in the world, then de-skew into the robot
 /// frame at the sweep's end with dead reckoning.
-RangeSweep make_sweep(const World3& world, const SpinningLaserOptions& o,
-                      const std::vector<Line>& lines, std::mt19937_64& rng) {
+RangeSweep make_sweep(const World3& world, const SpinningLaserOptions& o, const std::vector<Line>& lines,
+                      std::mt19937_64& rng) {
   const Pose3 mount = make_pose3({0.0, 0.0, o.mount_height}, {});
   const auto beams = static_cast<std::size_t>(o.beams_per_line);
   std::vector<double> range(lines.size() * beams, -1.0);
@@ -67,10 +66,8 @@ RangeSweep make_sweep(const World3& world, const SpinningLaserOptions& o,
     errors.run([&] {
       const Pose3 laser = lines[static_cast<std::size_t>(l)].truth * mount;
       for (std::size_t b = 0; b < beams; ++b) {
-        const double alpha =
-            -M_PI / 2 + M_PI * static_cast<double>(b) / static_cast<double>(beams - 1);
-        const Eigen::Vector3d dir =
-            laser.linear() * beam_direction(alpha, lines[static_cast<std::size_t>(l)].phi);
+        const double alpha = -M_PI / 2 + M_PI * static_cast<double>(b) / static_cast<double>(beams - 1);
+        const Eigen::Vector3d dir = laser.linear() * beam_direction(alpha, lines[static_cast<std::size_t>(l)].phi);
         if (const auto r = cast_ray(world.map, laser.translation(), dir, o.max_range)) {
           range[static_cast<std::size_t>(l) * beams + b] = *r;
         }
@@ -86,13 +83,12 @@ RangeSweep make_sweep(const World3& world, const SpinningLaserOptions& o,
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const Pose3 laser_in_end = end_inverse * lines[l].odometry * mount;
     for (std::size_t b = 0; b < beams; ++b) {
-      const double alpha =
-          -M_PI / 2 + M_PI * static_cast<double>(b) / static_cast<double>(beams - 1);
+      const double alpha = -M_PI / 2 + M_PI * static_cast<double>(b) / static_cast<double>(beams - 1);
       const double r = range[l * beams + b];
       const bool hit = r >= 0.0;
       const double measured = hit ? std::max(0.05, r + noise(rng)) : o.max_range;
-      sweep.rays.push_back({laser_in_end.translation(),
-                            laser_in_end * (beam_direction(alpha, lines[l].phi) * measured), hit});
+      sweep.rays.push_back(
+          {laser_in_end.translation(), laser_in_end * (beam_direction(alpha, lines[l].phi) * measured), hit});
     }
   }
   return sweep;
@@ -105,20 +101,16 @@ void CaveCrawlerOptions::validate() const {
     if (!ok) throw std::invalid_argument(std::string("cave crawler: ") + what);
   };
   require(speed > 0.0 && turn_rate > 0.0, "speed and turn_rate must be > 0");
-  require(laser.lines_per_sweep >= 1 && laser.beams_per_line >= 2,
-          "lines_per_sweep >= 1, beams_per_line >= 2");
-  require(laser.sweep_period > 0.0 && laser.max_range > 0.0,
-          "sweep_period and max_range must be > 0");
+  require(laser.lines_per_sweep >= 1 && laser.beams_per_line >= 2, "lines_per_sweep >= 1, beams_per_line >= 2");
+  require(laser.sweep_period > 0.0 && laser.max_range > 0.0, "sweep_period and max_range must be > 0");
   require(laser.range_sigma >= 0.0, "range_sigma must be >= 0");
 }
 
-RangeLog3 simulate_cave_crawler(const World3& world, const CaveCrawlerOptions& o,
-                                std::uint64_t seed, std::size_t max_sweeps,
-                                const std::function<void(std::size_t, std::size_t)>& progress) {
+RangeLog3 simulate_cave_crawler(const World3& world, const CaveCrawlerOptions& o, std::uint64_t seed,
+                                std::size_t max_sweeps, const std::function<void(std::size_t, std::size_t)>& progress) {
   o.validate();
   const double dt = o.laser.sweep_period / o.laser.lines_per_sweep;
-  const std::vector<TrueStep> steps =
-      sim3d_detail::follow_route(world.route, o.speed, o.turn_rate, dt);
+  const std::vector<TrueStep> steps = sim3d_detail::follow_route(world.route, o.speed, o.turn_rate, dt);
   RangeLog3 log;
   log.source = world.name;
   if (steps.empty()) return log;

@@ -40,8 +40,7 @@ class Rasteriser {
 
  private:
   void solid(long x, long y, long z) {
-    writer_.set_log_odds({static_cast<std::uint16_t>(x), static_cast<std::uint16_t>(y),
-                          static_cast<std::uint16_t>(z)},
+    writer_.set_log_odds({static_cast<std::uint16_t>(x), static_cast<std::uint16_t>(y), static_cast<std::uint16_t>(z)},
                          static_cast<float>(map_.options().log_odds_max));
   }
   EvidenceOctree& map_;
@@ -100,9 +99,8 @@ World3 make_garage_world(std::uint64_t seed, double resolution) {
   add_structure(r);
   add_cars(r, seed);
   const double d = kDeck;
-  w.route = {{8, 7, 0},   {20, 7, 0},  {20, 16, 0}, {30, 16, 0}, {54, 16, d}, {63, 16, d},
-             {63, 29, d}, {8, 29, d},  {8, 7, d},   {63, 7, d},  {63, 20, d}, {54, 20, d},
-             {30, 20, 0}, {20, 20, 0}, {20, 9, 0},  {8, 7.5, 0}};
+  w.route = {{8, 7, 0}, {20, 7, 0}, {20, 16, 0}, {30, 16, 0}, {54, 16, d}, {63, 16, d}, {63, 29, d}, {8, 29, d},
+             {8, 7, d}, {63, 7, d}, {63, 20, d}, {54, 20, d}, {30, 20, 0}, {20, 20, 0}, {20, 9, 0},  {8, 7.5, 0}};
   return w;
 }
 

@@ -8,8 +8,8 @@
 
 namespace lookahead::slam::sim3d_detail {
 
-std::vector<TrueStep> follow_route(const std::vector<Eigen::Vector3d>& route, double speed,
-                                   double turn_rate, double dt) {
+std::vector<TrueStep> follow_route(const std::vector<Eigen::Vector3d>& route, double speed, double turn_rate,
+                                   double dt) {
   std::vector<TrueStep> steps;
   if (route.size() < 2) return steps;
   Eigen::Vector3d p = route[0];

@@ -16,7 +16,7 @@ struct TrueStep {
 };
 
 /// Steps of length dt until the last waypoint is reached.
-std::vector<TrueStep> follow_route(const std::vector<Eigen::Vector3d>& route, double speed,
-                                   double turn_rate, double dt);
+std::vector<TrueStep> follow_route(const std::vector<Eigen::Vector3d>& route, double speed, double turn_rate,
+                                   double dt);
 
 }  // namespace lookahead::slam::sim3d_detail

@@ -24,13 +24,13 @@
 namespace lookahead::pipeline {
 
 struct SlamLookaheadOptions {
-  int period_updates = 10;   ///< a new target every this many filter updates
-  int latency_updates = 2;   ///< a prediction reaches the filter this many updates later
-  double range = 8.0;        ///< frontier cells up to this far from the robot [m]
-  double half_angle = 1.0;   ///< ... and within this of its heading [rad]
+  int period_updates = 10;           ///< a new target every this many filter updates
+  int latency_updates = 2;           ///< a prediction reaches the filter this many updates later
+  double range = 8.0;                ///< frontier cells up to this far from the robot [m]
+  double half_angle = 1.0;           ///< ... and within this of its heading [rad]
   bool wait_for_predictions = true;  ///< wait for a late prediction instead of taking it later
-  int max_candidates = 12;    ///< frontier cells offered per request, nearest first
-  double candidate_spacing = 0.5;  ///< candidates at least this far apart [m]
+  int max_candidates = 12;           ///< frontier cells offered per request, nearest first
+  double candidate_spacing = 0.5;    ///< candidates at least this far apart [m]
 };
 
 /// The frontier cell (free, with an unknown 4-neighbour) nearest to `pose` within the range
@@ -45,11 +45,11 @@ std::vector<std::pair<double, double>> frontiers_ahead(const slam::OccupancyGrid
 
 /// One delivered prediction: where, what became of it, and its best alignment.
 struct LogPredictionRecord {
-  int update = 0;                 ///< filter update at which it reached the filter
-  double x = 0, y = 0;            ///< target [m], best particle's map frame
+  int update = 0;       ///< filter update at which it reached the filter
+  double x = 0, y = 0;  ///< target [m], best particle's map frame
   predictor::Prediction::Status status = predictor::Prediction::Status::kNoControlPoint;
   double psi = 0, conflict_share = 0;  ///< of the best alignment (0 without one)
-  double predicted_area = 0;      ///< [m^2]
+  double predicted_area = 0;           ///< [m^2]
 };
 
 struct SlamLookaheadStatistics {

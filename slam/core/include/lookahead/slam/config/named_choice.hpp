@@ -22,8 +22,7 @@ namespace lookahead::slam::config {
 template <typename E, typename = void>
 struct is_named_choice : std::false_type {};
 template <typename E>
-struct is_named_choice<E, std::void_t<decltype(choice_names(std::declval<E>()))>>
-    : std::is_enum<E> {};
+struct is_named_choice<E, std::void_t<decltype(choice_names(std::declval<E>()))>> : std::is_enum<E> {};
 template <typename E>
 inline constexpr bool is_named_choice_v = is_named_choice<E>::value;
 
@@ -49,8 +48,7 @@ std::optional<E> choice_from_name(const std::string& name) {
 template <typename E>
 std::string choice_list() {
   std::string out;
-  for (const auto& entry : choice_names(E{}))
-    out += (out.empty() ? "" : " | ") + std::string(entry.second);
+  for (const auto& entry : choice_names(E{})) out += (out.empty() ? "" : " | ") + std::string(entry.second);
   return out;
 }
 

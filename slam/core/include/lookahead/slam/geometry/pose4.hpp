@@ -37,9 +37,7 @@ struct Pose4 {
     return {t.x(), t.y(), t.z(), euler_of(p.linear()).yaw};
   }
   /// The full pose with the given roll and pitch (R = Rz(yaw) Ry(pitch) Rx(roll)).
-  [[nodiscard]] Pose3 with_tilt(double roll, double pitch) const {
-    return make_pose3(position(), {roll, pitch, yaw});
-  }
+  [[nodiscard]] Pose3 with_tilt(double roll, double pitch) const { return make_pose3(position(), {roll, pitch, yaw}); }
   [[nodiscard]] Pose3 level_pose3() const { return with_tilt(0.0, 0.0); }
 };
 

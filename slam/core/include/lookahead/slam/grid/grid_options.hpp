@@ -6,11 +6,11 @@
 namespace lookahead::slam {
 
 struct GridOptions {
-  double resolution = 0.05;        ///< cell side [m], 0.01..1
-  double log_odds_hit = 0.85;      ///< added to a cell a beam ends in (p = 0.70), > 0
-  double log_odds_miss = -0.4;     ///< added to a cell a beam passes through (p = 0.40), < 0
-  double log_odds_min = -2.0;      ///< clamp, keeps cells able to change (p = 0.12)
-  double log_odds_max = 3.5;       ///< clamp (p = 0.97)
+  double resolution = 0.05;     ///< cell side [m], 0.01..1
+  double log_odds_hit = 0.85;   ///< added to a cell a beam ends in (p = 0.70), > 0
+  double log_odds_miss = -0.4;  ///< added to a cell a beam passes through (p = 0.40), < 0
+  double log_odds_min = -2.0;   ///< clamp, keeps cells able to change (p = 0.12)
+  double log_odds_max = 3.5;    ///< clamp (p = 0.97)
   /// A cell becomes an obstacle of the likelihood field when its log-odds reaches this...
   double obstacle_on = 0.5;
   /// ...and stops being one when it falls to this (hysteresis: grazing beams do not make a

@@ -17,7 +17,7 @@ struct GridTile {
   static constexpr std::int16_t kUnknown = std::numeric_limits<std::int16_t>::min();
   /// Squared distance (in cells^2) meaning "no obstacle within the field radius".
   static constexpr std::uint8_t kFar = 255;
-  static constexpr std::uint8_t kObstacle = 1;  ///< flags bit: counts for the distance field
+  static constexpr std::uint8_t kObstacle = 1;     ///< flags bit: counts for the distance field
   static constexpr std::uint8_t kHitThisScan = 2;  ///< flags bit: set while a scan is inserted
 
   GridTile() {

@@ -70,9 +70,7 @@ class OccupancyGrid {
   [[nodiscard]] std::size_t tile_count() const;
   [[nodiscard]] std::size_t tiles_shared_with(const OccupancyGrid& other) const;
 
-  static int local(CellIndex c) {
-    return GridTile::index(c.x & (GridTile::kSide - 1), c.y & (GridTile::kSide - 1));
-  }
+  static int local(CellIndex c) { return GridTile::index(c.x & (GridTile::kSide - 1), c.y & (GridTile::kSide - 1)); }
 
   /// Fixed-point values of the options, precomputed for the insertion loop.
   int fixed_hit() const { return hit_; }
@@ -84,9 +82,7 @@ class OccupancyGrid {
   void on_became_obstacle(CellIndex c);
   void on_stopped_being_obstacle(CellIndex c);
   int nearest_obstacle_dist2(CellIndex c) const;
-  GridTile& mutable_tile_of(CellIndex c) {
-    return mutable_tile(c.x >> GridTile::kBits, c.y >> GridTile::kBits);
-  }
+  GridTile& mutable_tile_of(CellIndex c) { return mutable_tile(c.x >> GridTile::kBits, c.y >> GridTile::kBits); }
 
   struct Offset {
     int dx, dy, d2;

@@ -14,8 +14,7 @@ namespace lookahead::slam::carmen {
 
 class Fields {
  public:
-  Fields(const std::string& file, std::size_t line, std::string_view text)
-      : file_(file), line_(line) {
+  Fields(const std::string& file, std::size_t line, std::string_view text) : file_(file), line_(line) {
     std::size_t i = 0;
     while (i < text.size()) {
       while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
@@ -30,8 +29,7 @@ class Fields {
 
   void require(std::size_t count, const char* what) const {
     if (tokens_.size() < count) {
-      fail(what, std::to_string(tokens_.size()) + " fields",
-           "too few fields: need at least " + std::to_string(count));
+      fail(what, std::to_string(tokens_.size()) + " fields", "too few fields: need at least " + std::to_string(count));
     }
   }
 

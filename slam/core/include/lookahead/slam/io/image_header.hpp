@@ -13,11 +13,11 @@ namespace lookahead::slam {
 
 /// Throws ParseError (file `context_file`, line `line`, field `key`, value "W x H") when the
 /// header of `image_path` claims a size over limits::kMaxImagePixels or is malformed.
-void check_image_header(const std::string& image_path, const std::string& context_file,
-                        std::size_t line, const std::string& key);
+void check_image_header(const std::string& image_path, const std::string& context_file, std::size_t line,
+                        const std::string& key);
 
 /// The same check on a decoded image's size.
-void check_image_size(std::int64_t width, std::int64_t height, const std::string& context_file,
-                      std::size_t line, const std::string& key);
+void check_image_size(std::int64_t width, std::int64_t height, const std::string& context_file, std::size_t line,
+                      const std::string& key);
 
 }  // namespace lookahead::slam

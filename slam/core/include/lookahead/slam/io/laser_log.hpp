@@ -59,11 +59,11 @@ struct LaserLog {
   std::string path;
   std::vector<LaserScan> scans;
   std::size_t lines_read = 0;
-  std::size_t bad_lines = 0;            ///< skipped with --skip-bad-lines
-  std::string first_bad_line_message;   ///< what was wrong with the first skipped line
-  std::vector<MessageCount> messages;   ///< every message kind in the input, counted
-  std::string scan_source;              ///< message kind or topic the scans came from
-  std::string odometry_source;          ///< where the scans' odometry came from
+  std::size_t bad_lines = 0;           ///< skipped with --skip-bad-lines
+  std::string first_bad_line_message;  ///< what was wrong with the first skipped line
+  std::vector<MessageCount> messages;  ///< every message kind in the input, counted
+  std::string scan_source;             ///< message kind or topic the scans came from
+  std::string odometry_source;         ///< where the scans' odometry came from
   /// Scans the input carries again in another message kind (same ranges), not used twice.
   std::size_t duplicate_scans = 0;
   /// Scans left out because no odometry covers their time; what was read before is kept.

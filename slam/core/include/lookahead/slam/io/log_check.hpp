@@ -53,7 +53,7 @@ struct LogCheck {
   std::string scan_source, odometry_source;
   std::size_t scans = 0;
   double first_stamp = 0.0, last_stamp = 0.0;
-  double median_period = 0.0;  ///< [s]
+  double median_period = 0.0;         ///< [s]
   std::vector<ScanGap> largest_gaps;  ///< up to three, longest first
   std::size_t long_gaps = 0;          ///< gaps over the threshold
   double gap_threshold = 0.0;         ///< [s]
@@ -64,8 +64,8 @@ struct LogCheck {
   std::size_t fov_changes = 0;
   std::size_t beams_min = 0, beams_max = 0;
   double no_return_share = 0.0;
-  double no_return_value = 0.0;  ///< most frequent finite no-return reading (0: none) [m]
-  Pose2 laser_offset;            ///< of the first scan
+  double no_return_value = 0.0;      ///< most frequent finite no-return reading (0: none) [m]
+  Pose2 laser_offset;                ///< of the first scan
   double laser_offset_spread = 0.0;  ///< largest distance of another scan's offset from it [m]
   std::size_t scans_without_odometry = 0;
   bool odometry_moves = false;

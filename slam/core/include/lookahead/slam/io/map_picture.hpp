@@ -50,8 +50,7 @@ BgrImage render_map_picture(const ProbabilityMap& map, const std::vector<Picture
                             const std::vector<PicturePoints>& points, const std::string& title);
 
 /// render_map_picture() written to a PNG file.
-void write_map_picture(const std::string& png_path, const ProbabilityMap& map,
-                       const std::vector<PicturePath>& paths, const std::string& title,
-                       const std::vector<PicturePoints>& points = {});
+void write_map_picture(const std::string& png_path, const ProbabilityMap& map, const std::vector<PicturePath>& paths,
+                       const std::string& title, const std::vector<PicturePoints>& points = {});
 
 }  // namespace lookahead::slam

@@ -10,8 +10,7 @@ namespace lookahead::slam {
 
 class ParseError : public std::runtime_error {
  public:
-  ParseError(std::string file, std::size_t line, std::string field, std::string value,
-             const std::string& reason);
+  ParseError(std::string file, std::size_t line, std::string field, std::string value, const std::string& reason);
 
   [[nodiscard]] const std::string& file() const { return file_; }
   [[nodiscard]] std::size_t line() const { return line_; }

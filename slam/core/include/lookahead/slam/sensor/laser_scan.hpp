@@ -14,7 +14,7 @@ namespace lookahead::slam {
 /// beams counter-clockwise from angle_min). Readings that are not finite, not positive, or
 /// at/above max_range are no-returns (see is_return()).
 struct LaserScan {
-  double timestamp = 0.0;        ///< source's own timestamp [s] (CARMEN: ipc timestamp)
+  double timestamp = 0.0;  ///< source's own timestamp [s] (CARMEN: ipc timestamp)
   /// CARMEN's logger timestamp (the clock GMapping's .gfs.log outputs print); equal to
   /// `timestamp` for sources with one clock.
   double logger_timestamp = 0.0;

@@ -14,12 +14,12 @@
 namespace lookahead::slam {
 
 struct LikelihoodOptions {
-  double sigma = 0.05;          ///< std. dev. of an end point around the wall it hit [m]
-  double random_floor = 0.05;   ///< mixture weight of unexplained readings, (0, 1)
+  double sigma = 0.05;         ///< std. dev. of an end point around the wall it hit [m]
+  double random_floor = 0.05;  ///< mixture weight of unexplained readings, (0, 1)
   /// Likelihood of an end point in never-observed space: neither evidence for nor against.
   double unknown_likelihood = 0.3;
-  int beam_step = 2;            ///< use every n-th beam (neighbouring beams are correlated)
-  double max_range = 30.0;      ///< longer readings are left out of the likelihood [m]
+  int beam_step = 2;        ///< use every n-th beam (neighbouring beams are correlated)
+  double max_range = 30.0;  ///< longer readings are left out of the likelihood [m]
   /// Exponent on the product over beams (GMapping's "gain"): the beams are not independent,
   /// and the plain product is far too peaked for a particle filter. 1 = plain product.
   double temperature = 0.3;
@@ -38,15 +38,12 @@ class LikelihoodFieldModel {
   LikelihoodFieldModel(const LikelihoodOptions& options, const OccupancyGrid& like_grid);
 
   /// Tempered log p(z | x, m) of the scan from robot pose `robot` on `grid`.
-  [[nodiscard]] double log_likelihood(const OccupancyGrid& grid, const Pose2& robot,
-                                      const PreparedScan& scan) const;
+  [[nodiscard]] double log_likelihood(const OccupancyGrid& grid, const Pose2& robot, const PreparedScan& scan) const;
   /// Share of end points within one sigma-ish of an obstacle (a match-quality figure).
-  [[nodiscard]] double hit_ratio(const OccupancyGrid& grid, const Pose2& robot,
-                                 const PreparedScan& scan) const;
+  [[nodiscard]] double hit_ratio(const OccupancyGrid& grid, const Pose2& robot, const PreparedScan& scan) const;
   /// Tempered log-likelihood of one end point at world (wx, wy) on `grid`; `hit` tells
   /// whether it lies within the hit distance of an obstacle (P-SLAM's z_u scoring).
-  [[nodiscard]] double end_point_log_likelihood(const OccupancyGrid& grid, double wx, double wy,
-                                                bool& hit) const;
+  [[nodiscard]] double end_point_log_likelihood(const OccupancyGrid& grid, double wx, double wy, bool& hit) const;
   [[nodiscard]] const LikelihoodOptions& options() const { return options_; }
   /// Squared cell distance up to which hit_ratio counts an end point as a hit [cells^2].
   [[nodiscard]] int hit_dist2() const { return hit_dist2_; }

@@ -25,9 +25,7 @@ struct RangeSweep {
 struct RangeLog3 {
   std::string source;  ///< what produced it (a world name or a folder)
   std::vector<RangeSweep> sweeps;
-  [[nodiscard]] bool has_truth() const {
-    return !sweeps.empty() && sweeps.front().truth.has_value();
-  }
+  [[nodiscard]] bool has_truth() const { return !sweeps.empty() && sweeps.front().truth.has_value(); }
 };
 
 }  // namespace lookahead::slam

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cmath>
-
 #include <cstdint>
 #include <vector>
 
@@ -36,8 +35,7 @@ struct InsertOptions {
 /// cast, so a beam grazing a wall does not erase the endpoint of its neighbour in the same
 /// scan (the two-phase update of OctoMap). No-returns are skipped unless
 /// options.clear_no_returns says otherwise.
-void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan,
-                 const InsertOptions& options);
+void insert_scan(OccupancyGrid& grid, const Pose2& robot, const LaserScan& scan, const InsertOptions& options);
 
 /// Calls visit(cell) for every cell on the segment from `from` to `to`, both included, one
 /// cell per step along the major axis (the cells of Bresenham's line up to rounding ties).

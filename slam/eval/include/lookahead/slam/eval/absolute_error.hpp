@@ -10,16 +10,15 @@
 namespace lookahead::slam {
 
 struct AbsoluteError {
-  double rmse = 0.0;      ///< root mean square position error after alignment [m]
-  double mean = 0.0;      ///< mean position error after alignment [m]
-  double max = 0.0;       ///< [m]
+  double rmse = 0.0;  ///< root mean square position error after alignment [m]
+  double mean = 0.0;  ///< mean position error after alignment [m]
+  double max = 0.0;   ///< [m]
   std::size_t matched = 0;
-  Pose2 alignment;        ///< estimate frame -> reference frame
+  Pose2 alignment;  ///< estimate frame -> reference frame
 };
 
 /// Pairs poses whose stamps are within `tolerance` seconds, then aligns and scores them.
 AbsoluteError absolute_trajectory_error(const std::vector<StampedPose>& reference,
-                                        const std::vector<StampedPose>& estimate,
-                                        double tolerance = 0.005);
+                                        const std::vector<StampedPose>& estimate, double tolerance = 0.005);
 
 }  // namespace lookahead::slam

@@ -8,8 +8,8 @@
 namespace lookahead::slam {
 
 struct MapEntropy {
-  double total = 0.0;          ///< [nats]
-  std::size_t observed = 0;    ///< cells with a probability
+  double total = 0.0;        ///< [nats]
+  std::size_t observed = 0;  ///< cells with a probability
   [[nodiscard]] double per_cell() const { return observed ? total / static_cast<double>(observed) : 0.0; }
 };
 

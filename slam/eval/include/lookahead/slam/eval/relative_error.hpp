@@ -24,17 +24,16 @@ std::vector<Relation> read_relations(const std::string& path);
 struct RelativeError {
   double trans_mean = 0.0, trans_std = 0.0;  ///< [m]
   double rot_mean = 0.0, rot_std = 0.0;      ///< [deg]
-  std::size_t used = 0;     ///< relations whose two stamps matched a pose
-  std::size_t skipped = 0;  ///< relations with a stamp farther than the tolerance from any pose
+  std::size_t used = 0;                      ///< relations whose two stamps matched a pose
+  std::size_t skipped = 0;                   ///< relations with a stamp farther than the tolerance from any pose
 };
 
 /// Matches each relation stamp to the nearest trajectory stamp within `tolerance` seconds.
-RelativeError relative_error(const std::vector<Relation>& relations,
-                             const std::vector<StampedPose>& trajectory, double tolerance = 0.005);
+RelativeError relative_error(const std::vector<Relation>& relations, const std::vector<StampedPose>& trajectory,
+                             double tolerance = 0.005);
 
 /// Relations between consecutive-enough poses of a reference trajectory (every pair of
 /// reference poses `stride` apart): for logs whose reference is another trajectory.
-std::vector<Relation> relations_from_reference(const std::vector<StampedPose>& reference,
-                                               std::size_t stride = 1);
+std::vector<Relation> relations_from_reference(const std::vector<StampedPose>& reference, std::size_t stride = 1);
 
 }  // namespace lookahead::slam

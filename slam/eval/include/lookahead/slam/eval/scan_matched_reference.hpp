@@ -23,6 +23,6 @@ struct ScanMatchedReference {
 /// be at most `tolerance` [m] (the two logs round readings differently). Raw scans are
 /// searched forward from the previous pair, so the reference keeps the raw log's order.
 ScanMatchedReference reference_by_matching_scans(const LaserLog& corrected, const LaserLog& raw,
-                                                  double tolerance = 0.01);
+                                                 double tolerance = 0.01);
 
 }  // namespace lookahead::slam

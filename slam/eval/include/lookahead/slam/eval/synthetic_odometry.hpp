@@ -20,11 +20,11 @@
 namespace lookahead::slam {
 
 struct OdometryDriftModel {
-  double k_t = 0.03;     ///< translation noise per metre (3 %)
-  double k_r = 0.05;     ///< rotation noise per radian turned (5 %)
-  double k_rt = 0.01;    ///< rotation noise per metre driven [rad/m] (0.57 deg/m)
-  double k_b = 0.005;    ///< std of the initial heading bias [rad/m] (0.29 deg/m)
-  double k_bw = 0.001;   ///< random-walk step of the bias per metre [rad/m/m]
+  double k_t = 0.03;    ///< translation noise per metre (3 %)
+  double k_r = 0.05;    ///< rotation noise per radian turned (5 %)
+  double k_rt = 0.01;   ///< rotation noise per metre driven [rad/m] (0.57 deg/m)
+  double k_b = 0.005;   ///< std of the initial heading bias [rad/m] (0.29 deg/m)
+  double k_bw = 0.001;  ///< random-walk step of the bias per metre [rad/m/m]
   std::uint64_t seed = 1;
 };
 

@@ -36,8 +36,7 @@ class FastSlam final : public LocalFrontEnd {
 
  private:
   /// One particle's DAS, proposal, pose draw and landmark updates; returns log weight factor.
-  double update_particle(Particle& p, const std::vector<RangeBearing>& z,
-                         std::vector<Decision>& decisions);
+  double update_particle(Particle& p, const std::vector<RangeBearing>& z, std::vector<Decision>& decisions);
   void apply_missed_detections(Particle& p, const std::vector<Decision>& decisions) const;
   void cull();
   void resample_if_degenerate();

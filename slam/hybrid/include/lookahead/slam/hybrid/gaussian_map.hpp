@@ -12,14 +12,16 @@
 namespace lookahead::slam::hybrid {
 
 struct GaussianMap {
-  Eigen::VectorXd mean;            ///< 3 + 2 K
-  Eigen::MatrixXd covariance;      ///< (3 + 2 K)^2
-  std::vector<long> ids;           ///< K feature identities (correspondence variables)
-  std::vector<double> existence;   ///< K probabilities of existence
+  Eigen::VectorXd mean;           ///< 3 + 2 K
+  Eigen::MatrixXd covariance;     ///< (3 + 2 K)^2
+  std::vector<long> ids;          ///< K feature identities (correspondence variables)
+  std::vector<double> existence;  ///< K probabilities of existence
 
   [[nodiscard]] std::size_t features() const { return ids.size(); }
   [[nodiscard]] Pose2 vehicle() const;
-  [[nodiscard]] Eigen::Vector2d feature(std::size_t k) const { return mean.segment<2>(3 + 2 * static_cast<Eigen::Index>(k)); }
+  [[nodiscard]] Eigen::Vector2d feature(std::size_t k) const {
+    return mean.segment<2>(3 + 2 * static_cast<Eigen::Index>(k));
+  }
 };
 
 /// A vehicle pose estimate: mean and 3 x 3 covariance.

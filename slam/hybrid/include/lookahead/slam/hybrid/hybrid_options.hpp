@@ -11,16 +11,16 @@ namespace lookahead::slam::hybrid {
 
 /// Range-bearing sensor (HybridSLAM sec. 5.2: 360 deg, 25 m, 0.05 m and 1 deg noise).
 struct SensorOptions {
-  double max_range = 25.0;       ///< [m], > 0
-  double sigma_range = 0.05;     ///< [m], > 0
+  double max_range = 25.0;                      ///< [m], > 0
+  double sigma_range = 0.05;                    ///< [m], > 0
   double sigma_bearing = 0.017453292519943295;  ///< [rad] (1 deg), > 0
 };
 
 /// Probability of existence of a feature, updated per HybridSLAM sec. 5.1 HybridSLAM eq. (11).
 struct ExistenceOptions {
-  double alpha = 1.0;   ///< p(detect | feature in view), (0, 1]
-  double beta = 0.0;    ///< p(false alarm | feature in view), [0, 1)
-  double prior = 0.5;   ///< existence before the observation that creates a feature
+  double alpha = 1.0;            ///< p(detect | feature in view), (0, 1]
+  double beta = 0.0;             ///< p(false alarm | feature in view), [0, 1)
+  double prior = 0.5;            ///< existence before the observation that creates a feature
   double fuse_threshold = 0.95;  ///< only features above this are fused (HybridSLAM sec. 5.1)
   double cull_threshold = 0.02;  ///< features below this are deleted
   /// Features predicted this far inside the sensor range count as "in view" for the
@@ -34,7 +34,7 @@ struct ExistenceOptions {
 
 /// FastSLAM 2.0 with data association sampling (Montemerlo et al. 2003; HybridSLAM sec. 3, 5.1).
 struct FastSlamOptions {
-  int particles = 500;            ///< P, >= 1 (HybridSLAM sec. 5.1)
+  int particles = 500;              ///< P, >= 1 (HybridSLAM sec. 5.1)
   double resample_threshold = 0.5;  ///< resample when N_eff < this * P
   /// Likelihood of "a new feature" for an observation no mapped feature explains, in the
   /// units of the range-bearing density [1/(m rad)] (Montemerlo's p0).
@@ -42,17 +42,17 @@ struct FastSlamOptions {
   /// Candidates are features within this distance of the observed point [m] (a cheap
   /// pre-gate; the chi-square gate below decides).
   double candidate_radius = 6.0;
-  double gate_chi2 = 13.8;        ///< individual gate on the innovation (2 dof, 99.9 %)
-  std::uint64_t seed = 1;         ///< seed of every random draw of the filter
+  double gate_chi2 = 13.8;  ///< individual gate on the innovation (2 dof, 99.9 %)
+  std::uint64_t seed = 1;   ///< seed of every random draw of the filter
 };
 
 /// Sub-map fusion into the EKF global map (HybridSLAM sec. 4).
 struct FusionOptions {
-  double period = 10.0;           ///< T: local map age at fusion [s] (HybridSLAM sec. 5.1)
+  double period = 10.0;  ///< T: local map age at fusion [s] (HybridSLAM sec. 5.1)
   /// Beyond the paper (HybridSLAM sec. 6 suggests it): delay fusion while the particle cloud is
   /// multi-modal or particles disagree about features, for at most max_delay.
   bool adaptive = false;
-  double max_delay = 10.0;        ///< [s]
+  double max_delay = 10.0;  ///< [s]
   /// A feature is disputed when the particle weight holding it is within (d, 1 - d).
   double disputed_fraction = 0.2;
   /// The cloud is multi-modal when more than this weight lies beyond the 99 % ellipse of
@@ -61,7 +61,7 @@ struct FusionOptions {
   double jcbb_confidence = 0.99;  ///< joint compatibility test level
   /// Std added to each pair's difference in the association test only [m] (see global_map.cpp).
   double association_sigma = 0.15;
-  int jcbb_max_nodes = 20000;     ///< cap on the branch-and-bound search
+  int jcbb_max_nodes = 20000;  ///< cap on the branch-and-bound search
   /// Beyond the paper: after each fusion, re-solve the global map over all local maps by
   /// Gauss-Newton (every Jacobian at the current solution) instead of keeping the EKF's
   /// once-linearised result (see global_map.cpp). Off: the paper's one-step EKF.
@@ -76,8 +76,8 @@ struct FusionOptions {
 /// within seconds). A small floor keeps the heading and lateral position explorable by
 /// the FastSLAM 2.0 proposal. It is given to every filter, so the comparison stays fair.
 struct ProcessNoiseFloor {
-  double xy = 0.02;      ///< [m / sqrt(s)] on each position component of the increment
-  double theta = 0.01;   ///< [rad / sqrt(s)]
+  double xy = 0.02;     ///< [m / sqrt(s)] on each position component of the increment
+  double theta = 0.01;  ///< [rad / sqrt(s)]
 };
 
 struct HybridOptions {

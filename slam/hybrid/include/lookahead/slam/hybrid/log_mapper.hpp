@@ -17,7 +17,7 @@ namespace lookahead::slam::hybrid {
 
 struct LogMappingOptions {
   HybridOptions filter = laser_defaults();
-  MotionModelOptions motion;        ///< odometry noise (the RBPF's srr/srt/str/stt model)
+  MotionModelOptions motion;  ///< odometry noise (the RBPF's srr/srt/str/stt model)
   ScanLandmarkOptions landmarks;
 
   /// HybridSLAM sec. 5 values where they carry over; for a laser's corners and line ends
@@ -27,9 +27,9 @@ struct LogMappingOptions {
 };
 
 struct LogMappingResult {
-  std::vector<Pose2> trajectory;            ///< per scan, global estimate
-  std::vector<MapFeature> features;         ///< final global feature map
-  std::size_t observations = 0;             ///< landmarks extracted over the log
+  std::vector<Pose2> trajectory;     ///< per scan, global estimate
+  std::vector<MapFeature> features;  ///< final global feature map
+  std::size_t observations = 0;      ///< landmarks extracted over the log
   int fusions = 0;
 };
 

@@ -43,10 +43,10 @@ class MapJoining {
 
  private:
   struct Factor {
-    int from = 0;                  ///< origin pose index (0 = the start, fixed)
-    std::vector<int> features;     ///< global feature per local feature
-    Eigen::VectorXd mean;          ///< the local map, 3 + 2 K
-    Eigen::MatrixXd information;   ///< its inverse covariance
+    int from = 0;                 ///< origin pose index (0 = the start, fixed)
+    std::vector<int> features;    ///< global feature per local feature
+    Eigen::VectorXd mean;         ///< the local map, 3 + 2 K
+    Eigen::MatrixXd information;  ///< its inverse covariance
   };
   [[nodiscard]] Eigen::Index pose_column(int pose) const { return 3 * static_cast<Eigen::Index>(pose - 1); }
   [[nodiscard]] Eigen::Index feature_column(int feature) const;
@@ -55,7 +55,7 @@ class MapJoining {
   void residual_and_jacobian(const Factor& f, Eigen::VectorXd& r, Eigen::MatrixXd& j,
                              std::vector<Eigen::Index>& cols) const;
 
-  std::vector<Pose2> poses_;             ///< v_0 (fixed) ... v_K
+  std::vector<Pose2> poses_;  ///< v_0 (fixed) ... v_K
   std::vector<Eigen::Vector2d> features_;
   std::vector<Factor> factors_;
 };

@@ -14,9 +14,9 @@ using Vector3 = Eigen::Vector3d;
 using Matrix3 = Eigen::Matrix3d;
 
 struct MotionStep {
-  Pose2 delta;                         ///< u
-  Vector3 sigma = Vector3::Zero();     ///< std of u's components [m, m, rad]
-  double dt = 0.1;                     ///< duration [s]
+  Pose2 delta;                      ///< u
+  Vector3 sigma = Vector3::Zero();  ///< std of u's components [m, m, rad]
+  double dt = 0.1;                  ///< duration [s]
 };
 
 struct MotionJacobians {

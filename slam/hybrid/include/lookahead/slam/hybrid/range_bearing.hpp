@@ -21,9 +21,9 @@ using Matrix2 = Eigen::Matrix2d;
 using Matrix23 = Eigen::Matrix<double, 2, 3>;
 
 struct PredictedObservation {
-  Vector2 z;          ///< (range, bearing)
-  Matrix23 d_pose;    ///< dz / d(x, y, theta)
-  Matrix2 d_point;    ///< dz / d(mx, my)
+  Vector2 z;        ///< (range, bearing)
+  Matrix23 d_pose;  ///< dz / d(x, y, theta)
+  Matrix2 d_point;  ///< dz / d(mx, my)
 };
 
 /// h(pose, point).
@@ -31,8 +31,8 @@ PredictedObservation predict_observation(const Pose2& pose, const Vector2& point
 
 struct InitialisedPoint {
   Vector2 point;
-  Matrix23 d_pose;    ///< d point / d(x, y, theta)
-  Matrix2 d_z;        ///< d point / d(range, bearing)
+  Matrix23 d_pose;  ///< d point / d(x, y, theta)
+  Matrix2 d_z;      ///< d point / d(range, bearing)
 };
 
 /// h^-1: the point an observation places from `pose`.

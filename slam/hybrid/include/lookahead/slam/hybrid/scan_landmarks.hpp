@@ -21,14 +21,14 @@ namespace lookahead::slam::hybrid {
 
 /// Defaults and units are documented in config/hybrid/default.yaml (section scan_landmarks).
 struct ScanLandmarkOptions {
-  double max_range = 15.0;         ///< beams used up to [m]
-  double break_distance = 0.25;    ///< a run breaks where consecutive points are farther [m] (+ 3 r dphi)
-  double split_tolerance = 0.04;   ///< split a run where a point is this far from the chord [m]
-  int min_points = 8;              ///< beams per segment
-  double min_length = 0.6;         ///< segment length [m]
+  double max_range = 15.0;                       ///< beams used up to [m]
+  double break_distance = 0.25;                  ///< a run breaks where consecutive points are farther [m] (+ 3 r dphi)
+  double split_tolerance = 0.04;                 ///< split a run where a point is this far from the chord [m]
+  int min_points = 8;                            ///< beams per segment
+  double min_length = 0.6;                       ///< segment length [m]
   double corner_min_angle = 1.0471975511965976;  ///< 60 deg: lines meet at least this sharply
-  double corner_max_gap = 0.15;    ///< the intersection lies this close to the shared beam [m]
-  double occlusion_margin = 0.5;   ///< a neighbour this much farther (or missing) leaves the end free [m]
+  double corner_max_gap = 0.15;                  ///< the intersection lies this close to the shared beam [m]
+  double occlusion_margin = 0.5;                 ///< a neighbour this much farther (or missing) leaves the end free [m]
   /// ... unless it lies this close to the segment's line (the wall goes on) [m]
   double continuation_distance = 0.0;
   double min_incidence = 0.0;      ///< a line end's beam meets its line at least this steeply [rad]
@@ -44,8 +44,8 @@ void validate(const ScanLandmarkOptions& options);
 struct ScanLandmark {
   enum class Kind { kCorner, kLineEnd };
   Kind kind = Kind::kCorner;
-  Eigen::Vector2d point;           ///< robot frame [m]
-  Eigen::Matrix2d covariance;      ///< robot frame [m^2]
+  Eigen::Vector2d point;       ///< robot frame [m]
+  Eigen::Matrix2d covariance;  ///< robot frame [m^2]
 };
 
 std::vector<ScanLandmark> extract_scan_landmarks(const LaserScan& scan, const ScanLandmarkOptions& options);

@@ -18,17 +18,17 @@
 namespace lookahead::slam::hybrid {
 
 struct SimulationOptions {
-  double world_size = 120.0;     ///< side of the square world [m]
-  int features = 35;             ///< uniformly placed point features
-  double speed = 1.0;            ///< commanded linear velocity [m/s]
+  double world_size = 120.0;                  ///< side of the square world [m]
+  int features = 35;                          ///< uniformly placed point features
+  double speed = 1.0;                         ///< commanded linear velocity [m/s]
   double max_turn_rate = 1.7453292519943295;  ///< [rad/s] (100 deg/s)
-  double steering_gain = 3.0;    ///< turn rate per radian of heading error [1/s]
-  double dt = 0.1;               ///< control and observation period [s] (10 Hz)
-  double inset = 12.0;           ///< the loop runs this far inside the border [m]
-  double inset_jitter = 6.0;     ///< waypoints move up to this far, randomly [m]
-  double loop_overlap = 30.0;    ///< travel past the start after the loop [m]
-  double velocity_noise = 0.25;  ///< std of v as a fraction of v
-  double turn_noise = 0.35;      ///< std of omega as a fraction of omega
+  double steering_gain = 3.0;                 ///< turn rate per radian of heading error [1/s]
+  double dt = 0.1;                            ///< control and observation period [s] (10 Hz)
+  double inset = 12.0;                        ///< the loop runs this far inside the border [m]
+  double inset_jitter = 6.0;                  ///< waypoints move up to this far, randomly [m]
+  double loop_overlap = 30.0;                 ///< travel past the start after the loop [m]
+  double velocity_noise = 0.25;               ///< std of v as a fraction of v
+  double turn_noise = 0.35;                   ///< std of omega as a fraction of omega
   /// Fig. 3: an accurate compass. Deviation: modelled as a heading known exactly (no
   /// turn-rate noise), which is what "eliminating vehicle linearisation errors" needs.
   bool compass = false;
@@ -51,7 +51,7 @@ struct SimulatedRun {
 };
 
 /// World `world_seed` (features and path), noise and clutter from `noise_seed`.
-SimulatedRun simulate(const SimulationOptions& sim, const SensorOptions& sensor, double alpha,
-                      double beta, std::uint64_t world_seed, std::uint64_t noise_seed);
+SimulatedRun simulate(const SimulationOptions& sim, const SensorOptions& sensor, double alpha, double beta,
+                      std::uint64_t world_seed, std::uint64_t noise_seed);
 
 }  // namespace lookahead::slam::hybrid

@@ -19,12 +19,12 @@ struct StudyOptions {
   /// Clutter levels (HybridSLAM sec. 5.1): p(detection) and p(false alarm) per visible feature.
   std::vector<double> alphas = {1.0, 0.7, 0.4, 0.1};
   std::vector<double> betas = {0.0, 0.02, 0.04, 0.06};
-  int trials = 100;        ///< per filter and level (HybridSLAM sec. 5.3)
-  int worlds = 50;         ///< distinct random worlds (HybridSLAM sec. 5.2)
-  std::uint64_t seed = 1;  ///< seed of worlds, noise and filters
-  int threads = 0;         ///< 0 = all cores
-  double failure_sigma = 10.0;   ///< failure rule: Mahalanobis distance [std] ...
-  int failure_iterations = 20;   ///< ... exceeded for more than this many iterations
+  int trials = 100;             ///< per filter and level (HybridSLAM sec. 5.3)
+  int worlds = 50;              ///< distinct random worlds (HybridSLAM sec. 5.2)
+  std::uint64_t seed = 1;       ///< seed of worlds, noise and filters
+  int threads = 0;              ///< 0 = all cores
+  double failure_sigma = 10.0;  ///< failure rule: Mahalanobis distance [std] ...
+  int failure_iterations = 20;  ///< ... exceeded for more than this many iterations
 };
 
 struct StudyCell {
@@ -32,8 +32,8 @@ struct StudyCell {
   std::size_t level = 0;
   int successes = 0;
   int trials = 0;
-  double wall_s = 0.0;         ///< summed over trials
-  double simulated_s = 0.0;    ///< summed over trials
+  double wall_s = 0.0;       ///< summed over trials
+  double simulated_s = 0.0;  ///< summed over trials
   /// The failed trials (index within the level) and the step at which the rule fired, so a
   /// failure can be re-run alone (`hybrid-sim --trial`).
   std::vector<std::pair<int, int>> failures;

@@ -24,8 +24,7 @@ struct MapFeature {
 class SubmapFilter {
  public:
   /// `fuse` = false never fuses: the front-end alone (pure FastSLAM over the whole run).
-  SubmapFilter(std::unique_ptr<LocalFrontEnd> front_end, const HybridOptions& options,
-               const Pose2& start, bool fuse);
+  SubmapFilter(std::unique_ptr<LocalFrontEnd> front_end, const HybridOptions& options, const Pose2& start, bool fuse);
 
   /// One time step: control, observations, and a fusion when the rule says so.
   void step(const MotionStep& control, const std::vector<RangeBearing>& observations);

@@ -17,9 +17,7 @@ namespace lookahead::slam {
 struct OctreeKey {
   std::uint16_t x = 0, y = 0, z = 0;
 
-  friend bool operator==(const OctreeKey& a, const OctreeKey& b) {
-    return a.x == b.x && a.y == b.y && a.z == b.z;
-  }
+  friend bool operator==(const OctreeKey& a, const OctreeKey& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
   friend bool operator!=(const OctreeKey& a, const OctreeKey& b) { return !(a == b); }
 };
 
@@ -36,8 +34,7 @@ class OctreeGrid {
   [[nodiscard]] std::optional<OctreeKey> key_of(const Eigen::Vector3d& p) const {
     const long kx = axis_key(p.x()), ky = axis_key(p.y()), kz = axis_key(p.z());
     if (!in_range(kx) || !in_range(ky) || !in_range(kz)) return std::nullopt;
-    return OctreeKey{static_cast<std::uint16_t>(kx), static_cast<std::uint16_t>(ky),
-                     static_cast<std::uint16_t>(kz)};
+    return OctreeKey{static_cast<std::uint16_t>(kx), static_cast<std::uint16_t>(ky), static_cast<std::uint16_t>(kz)};
   }
   /// Centre of a voxel in metres.
   [[nodiscard]] Eigen::Vector3d centre_of(const OctreeKey& k) const {

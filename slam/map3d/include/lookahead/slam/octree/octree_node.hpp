@@ -23,7 +23,7 @@ namespace lookahead::slam::octree_detail {
 constexpr int kBrickBits = 2;  ///< 4 voxels per brick side
 constexpr int kBrickSide = 1 << kBrickBits;
 constexpr int kBrickVoxels = kBrickSide * kBrickSide * kBrickSide;  // 64
-constexpr int kInnerLevels = 16 - kBrickBits;  ///< inner levels above the bricks
+constexpr int kInnerLevels = 16 - kBrickBits;                       ///< inner levels above the bricks
 /// Readers and writers cache the node at this level (32^3 voxels: 6.4 m at 0.2 m), so
 /// neighbouring queries descend 3 levels instead of 14.
 constexpr int kAnchorLevel = kInnerLevels - 3;

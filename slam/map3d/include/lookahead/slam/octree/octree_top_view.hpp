@@ -10,7 +10,6 @@
 namespace lookahead::slam {
 
 /// `upsample` pixels per voxel side, so a coarse map still makes a readable picture.
-ProbabilityMap top_view(const EvidenceOctree& map, double wall_height = 1.2, int margin_cells = 5,
-                        int upsample = 2);
+ProbabilityMap top_view(const EvidenceOctree& map, double wall_height = 1.2, int margin_cells = 5, int upsample = 2);
 
 }  // namespace lookahead::slam

@@ -35,11 +35,9 @@ void trace_voxels(const OctreeGrid& grid, const Eigen::Vector3d& from, const Eig
 
 /// Phase one: the voxels a batch observes, in brick order (writes then stay in one brick
 /// for as long as possible).
-RayVoxels collect_ray_voxels(const OctreeGrid& grid, const std::vector<Ray3>& rays,
-                             const RayInsertOptions& options);
+RayVoxels collect_ray_voxels(const OctreeGrid& grid, const std::vector<Ray3>& rays, const RayInsertOptions& options);
 
 /// Both phases.
-void insert_rays(EvidenceOctree& map, const std::vector<Ray3>& rays,
-                 const RayInsertOptions& options);
+void insert_rays(EvidenceOctree& map, const std::vector<Ray3>& rays, const RayInsertOptions& options);
 
 }  // namespace lookahead::slam

@@ -12,7 +12,7 @@ namespace lookahead::slam {
 
 /// The pose after `increment` (robot frame, from dead reckoning) from `previous`, with the
 /// yaw advanced by `odometry_yaw_change` plus noise and the IMU's roll and pitch.
-Pose3 sample_motion3(const Pose3& previous, const Pose3& increment, const Euler& imu,
-                     double odometry_yaw_change, const Motion3Options& m, std::mt19937_64& rng);
+Pose3 sample_motion3(const Pose3& previous, const Pose3& increment, const Euler& imu, double odometry_yaw_change,
+                     const Motion3Options& m, std::mt19937_64& rng);
 
 }  // namespace lookahead::slam

@@ -22,8 +22,7 @@ struct Trajectory3Node {
   Pose3 pose;
   std::shared_ptr<const Trajectory3Node> parent;
 
-  Trajectory3Node(const Pose3& p, std::shared_ptr<const Trajectory3Node> up)
-      : pose(p), parent(std::move(up)) {}
+  Trajectory3Node(const Pose3& p, std::shared_ptr<const Trajectory3Node> up) : pose(p), parent(std::move(up)) {}
   ~Trajectory3Node();  // unlinks the chain iteratively (no deep recursion)
   Trajectory3Node(const Trajectory3Node&) = delete;
   Trajectory3Node& operator=(const Trajectory3Node&) = delete;

@@ -21,8 +21,7 @@ struct Slam3dOptions {
 /// Reads options from a YAML file on top of `base` (keys left out keep their value).
 Slam3dOptions load_slam3d_options(const std::string& path, const Slam3dOptions& base = {});
 /// Same, from YAML text (`source` names it in errors).
-Slam3dOptions parse_slam3d_options(const std::string& yaml, const std::string& source,
-                                   const Slam3dOptions& base = {});
+Slam3dOptions parse_slam3d_options(const std::string& yaml, const std::string& source, const Slam3dOptions& base = {});
 /// The options as YAML, with a comment per key (config/slam3d/default.yaml).
 std::string dump_slam3d_options(const Slam3dOptions& options);
 

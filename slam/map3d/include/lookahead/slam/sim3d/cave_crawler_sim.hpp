@@ -44,8 +44,8 @@ struct CaveCrawlerOptions {
 /// Drives the world's route once; one sweep per half turn of the laser. Same seed, same
 /// log. Stops after `max_sweeps` sweeps when it is not 0. `progress(done, total)` is
 /// called after each sweep.
-RangeLog3 simulate_cave_crawler(const World3& world, const CaveCrawlerOptions& options,
-                                std::uint64_t seed, std::size_t max_sweeps = 0,
+RangeLog3 simulate_cave_crawler(const World3& world, const CaveCrawlerOptions& options, std::uint64_t seed,
+                                std::size_t max_sweeps = 0,
                                 const std::function<void(std::size_t, std::size_t)>& progress = {});
 
 }  // namespace lookahead::slam

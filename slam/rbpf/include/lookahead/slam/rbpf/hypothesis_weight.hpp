@@ -29,10 +29,8 @@ struct HypothesisScore {
 /// particle's own map decides z_e vs z_u; `offsets[j]` moves a point of the particle's frame
 /// into hypothesis j's frame (the best particle's, sec. IV-B). The first hypothesis that
 /// covers an end point scores it.
-HypothesisScore score_on_hypotheses(const OccupancyGrid& map, const Pose2& robot,
-                                    const PreparedScan& scan,
+HypothesisScore score_on_hypotheses(const OccupancyGrid& map, const Pose2& robot, const PreparedScan& scan,
                                     const std::vector<std::shared_ptr<const HypothesisMap>>& hypotheses,
-                                    const std::vector<Pose2>& offsets,
-                                    const LikelihoodFieldModel& model);
+                                    const std::vector<Pose2>& offsets, const LikelihoodFieldModel& model);
 
 }  // namespace lookahead::slam

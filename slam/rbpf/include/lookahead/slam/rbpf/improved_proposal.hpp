@@ -38,23 +38,22 @@ constexpr std::array<std::pair<ProposalKind, const char*>, 2> choice_names(Propo
 
 struct ProposalOptions {
   ProposalKind kind = ProposalKind::kScanMatch;
-  double kernel_linear = 0.025;   ///< spacing of the K = 27 points in x and y [m]
-  double kernel_angular = 0.0125; ///< spacing in theta [rad]
+  double kernel_linear = 0.025;    ///< spacing of the K = 27 points in x and y [m]
+  double kernel_angular = 0.0125;  ///< spacing in theta [rad]
   /// Floor on the fitted standard deviations, a fraction of the kernel spacing: a likelihood
   /// peaked on one kernel point would otherwise give a zero covariance.
   double min_sigma_fraction = 0.25;
 };
 
 struct ProposalDraw {
-  Pose2 pose;             ///< x_t^(i) ~ N(mu, Sigma)
-  Pose2 mean;             ///< mu
-  double log_eta = 0.0;   ///< log of the weight factor eta
+  Pose2 pose;            ///< x_t^(i) ~ N(mu, Sigma)
+  Pose2 mean;            ///< mu
+  double log_eta = 0.0;  ///< log of the weight factor eta
 };
 
-ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous,
-                                    const Pose2& u, const Pose2& mode, const PreparedScan& scan,
-                                    const LikelihoodFieldModel& likelihood,
-                                    const OdometryMotionModel& motion,
-                                    const ProposalOptions& options, std::mt19937_64& rng);
+ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
+                                    const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
+                                    const OdometryMotionModel& motion, const ProposalOptions& options,
+                                    std::mt19937_64& rng);
 
 }  // namespace lookahead::slam

@@ -16,10 +16,10 @@
 namespace lookahead::slam {
 
 struct MotionModelOptions {
-  double srr = 0.1;   ///< translation error per metre of translation [m/m]
-  double srt = 0.2;   ///< rotation error per metre of translation [rad/m]
-  double str = 0.1;   ///< translation error per radian of rotation [m/rad]
-  double stt = 0.2;   ///< rotation error per radian of rotation [rad/rad]
+  double srr = 0.1;  ///< translation error per metre of translation [m/m]
+  double srt = 0.2;  ///< rotation error per metre of translation [rad/m]
+  double str = 0.1;  ///< translation error per radian of rotation [m/rad]
+  double stt = 0.2;  ///< rotation error per radian of rotation [rad/rad]
   /// Floors on the standard deviations, so a standing robot still has a proper density.
   double min_sigma_xy = 0.01;      ///< [m]
   double min_sigma_theta = 0.005;  ///< [rad]

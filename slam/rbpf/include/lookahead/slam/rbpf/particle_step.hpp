@@ -35,9 +35,9 @@ bool draw_particle(const ParticleStepModels& models, const OccupancyGrid& map, P
 /// Moves `pose` by odometry increment `u` through the proposal, adds the weight factor to
 /// `log_weight` (only when `warm`: a map with too few scans is not matched against) and
 /// inserts `scan` into `map`. Returns true when a warm particle's scan match failed.
-bool advance_particle(const ParticleStepModels& models, OccupancyGrid& map, Pose2& pose,
-                      double& log_weight, const Pose2& u, const LaserScan& scan,
-                      const PreparedScan& prepared, bool warm, std::mt19937_64& rng);
+bool advance_particle(const ParticleStepModels& models, OccupancyGrid& map, Pose2& pose, double& log_weight,
+                      const Pose2& u, const LaserScan& scan, const PreparedScan& prepared, bool warm,
+                      std::mt19937_64& rng);
 
 /// A reproducible, well-mixed seed for (run seed, update, particle): draws do not depend on
 /// which thread runs which particle.

@@ -20,15 +20,15 @@ namespace lookahead::slam {
 
 struct RbpfStatistics {
   std::size_t scans = 0;
-  std::size_t updates = 0;           ///< scans that ran the filter (motion threshold met)
+  std::size_t updates = 0;  ///< scans that ran the filter (motion threshold met)
   std::size_t resamplings = 0;
-  std::size_t match_failures = 0;    ///< particle updates that fell back to odometry
+  std::size_t match_failures = 0;  ///< particle updates that fell back to odometry
   std::size_t particle_updates = 0;
-  std::vector<double> neff;          ///< N_eff after each update
+  std::vector<double> neff;  ///< N_eff after each update
   // P-SLAM (only counted when prediction is enabled)
   std::size_t hypotheses_added = 0;
-  std::size_t predicted_updates = 0;  ///< updates with enough end points on a hypothesis
-  std::size_t prediction_used = 0;    ///< ... whose S2 entered the weights
+  std::size_t predicted_updates = 0;    ///< updates with enough end points on a hypothesis
+  std::size_t prediction_used = 0;      ///< ... whose S2 entered the weights
   std::size_t prediction_rejected = 0;  ///< ... dropped by the hit-ratio recovery rule (P-SLAM eq. (23))
 };
 
@@ -44,9 +44,7 @@ class Rbpf {
   /// beyond prediction.max_hypotheses. Ignored when prediction is disabled.
   void add_hypothesis(std::shared_ptr<const HypothesisMap> hypothesis);
   void clear_hypotheses();
-  [[nodiscard]] const std::vector<std::shared_ptr<const HypothesisMap>>& hypotheses() const {
-    return hypotheses_;
-  }
+  [[nodiscard]] const std::vector<std::shared_ptr<const HypothesisMap>>& hypotheses() const { return hypotheses_; }
 
   [[nodiscard]] const std::vector<Particle>& particles() const { return particles_; }
   [[nodiscard]] std::size_t best_particle() const;
@@ -68,9 +66,8 @@ class Rbpf {
  private:
   void initialize(const LaserScan& scan);
   bool motion_threshold_met(const LaserScan& scan) const;
-  void update_particle(Particle& p, const Pose2& u, const LaserScan& scan,
-                       const PreparedScan& prepared, std::mt19937_64& rng, bool& failed,
-                       HypothesisScore& predicted) const;
+  void update_particle(Particle& p, const Pose2& u, const LaserScan& scan, const PreparedScan& prepared,
+                       std::mt19937_64& rng, bool& failed, HypothesisScore& predicted) const;
   void update_particles(const LaserScan& scan);
   void apply_hypothesis_weights(const std::vector<HypothesisScore>& scores);
   void resample_if_needed();

@@ -16,12 +16,12 @@
 namespace lookahead::slam {
 
 struct RbpfOptions {
-  int particles = 30;              ///< N, 1..100000
-  std::uint64_t seed = 1;          ///< every random draw derives from it
-  int threads = 0;                 ///< worker threads for the particle loop; 0 = all cores
-  double linear_update = 0.5;      ///< filter update after this much travel [m]
-  double angular_update = 0.25;    ///< ... or this much rotation [rad]
-  double resample_threshold = 0.5; ///< resample when N_eff < threshold * N (0..1]
+  int particles = 30;               ///< N, 1..100000
+  std::uint64_t seed = 1;           ///< every random draw derives from it
+  int threads = 0;                  ///< worker threads for the particle loop; 0 = all cores
+  double linear_update = 0.5;       ///< filter update after this much travel [m]
+  double angular_update = 0.25;     ///< ... or this much rotation [rad]
+  double resample_threshold = 0.5;  ///< resample when N_eff < threshold * N (0..1]
   /// Updates during which scans are only inserted, before matching starts: the first scans
   /// have no map worth matching against.
   int warmup_updates = 1;

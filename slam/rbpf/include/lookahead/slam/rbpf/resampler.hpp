@@ -14,8 +14,7 @@ std::vector<double> normalized_weights(const std::vector<double>& log_weights);
 /// N_eff = 1 / sum w_i^2 of normalised weights (Grisetti 2007 eq. (20)).
 double effective_sample_size(const std::vector<double>& weights);
 /// Indices of the particles to keep, one draw of a single uniform offset.
-std::vector<std::size_t> low_variance_resample(const std::vector<double>& weights,
-                                               std::mt19937_64& rng);
+std::vector<std::size_t> low_variance_resample(const std::vector<double>& weights, std::mt19937_64& rng);
 
 /// Selective resampling (Grisetti et al. 2007, sec. IV step 5) of particles of any type with a
 /// `log_weight`: shifts the log weights by their max (ratios unchanged, values small), and

@@ -14,8 +14,8 @@ namespace lookahead::slam {
 RbpfOptions load_rbpf_options(const std::string& path, const RbpfOptions& base = {});
 /// Same, from YAML text (`source` names it in errors). `other_sections` are sections of
 /// the same file another loader reads (the predictor's, for `lookahead slam --predict`).
-RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& source,
-                               const RbpfOptions& base = {}, const std::set<std::string>& other_sections = {});
+RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& source, const RbpfOptions& base = {},
+                               const std::set<std::string>& other_sections = {});
 /// The top-level sections this loader reads.
 std::set<std::string> rbpf_section_names();
 /// The options as YAML, with a comment per key (what `lookahead config --dump` prints).

@@ -4,10 +4,9 @@
 // the cells of a square grid). Nearest neighbours come from a dense grid of the target's bins.
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "lookahead/slam/geometry/pose2.hpp"
 
@@ -19,9 +18,9 @@ using Points2 = std::vector<Eigen::Vector2d>;
 Points2 bin_points(const Points2& points, double bin);
 
 struct IcpResult {
-  Pose2 transform;           ///< source frame -> target frame
-  double mean_error = 0.0;   ///< mean point-to-line distance of the inlier pairs at the end [m]
-  double inlier_ratio = 0.0; ///< share of source points with a target within max_distance
+  Pose2 transform;            ///< source frame -> target frame
+  double mean_error = 0.0;    ///< mean point-to-line distance of the inlier pairs at the end [m]
+  double inlier_ratio = 0.0;  ///< share of source points with a target within max_distance
   int iterations = 0;
 };
 
@@ -48,10 +47,8 @@ class IcpTarget {
 };
 
 /// Aligns `source` onto `target` starting from `guess`.
-IcpResult icp_binned(const Points2& source, const IcpTarget& target, const Pose2& guess,
-                     const IcpOptions& options);
+IcpResult icp_binned(const Points2& source, const IcpTarget& target, const Pose2& guess, const IcpOptions& options);
 /// Same, preparing the target on the fly.
-IcpResult icp_binned(const Points2& source, const Points2& target, const Pose2& guess,
-                     const IcpOptions& options);
+IcpResult icp_binned(const Points2& source, const Points2& target, const Pose2& guess, const IcpOptions& options);
 
 }  // namespace lookahead::slam::segslam

@@ -17,8 +17,8 @@ namespace lookahead::slam::segslam {
 /// Poses centre + (i step, j step, a angle_step) for |i|, |j| <= radius / step and
 /// |a| <= angle / angle_step.
 struct PoseGrid {
-  double radius = 2.0, step = 0.25;       ///< [m]
-  double angle = 0.25, angle_step = 0.05; ///< [rad]
+  double radius = 2.0, step = 0.25;        ///< [m]
+  double angle = 0.25, angle_step = 0.05;  ///< [rad]
 };
 
 struct CoarseResult {

@@ -43,10 +43,10 @@ bool has_observed_near(const OccupancyGrid& map, double x, double y, double radi
 
 struct WindowMatch {
   bool ok = false;
-  Pose2 pose;               ///< the robot at the window's start, in the candidate's frame
-  double icp_error = 0.0;   ///< [m]
-  double translation = 0.0; ///< tau_m: distance from the guess [m]
-  double weight = 0.0;      ///< SegSLAM eq. (18) (or SegSLAM eq. (19))
+  Pose2 pose;                ///< the robot at the window's start, in the candidate's frame
+  double icp_error = 0.0;    ///< [m]
+  double translation = 0.0;  ///< tau_m: distance from the guess [m]
+  double weight = 0.0;       ///< SegSLAM eq. (18) (or SegSLAM eq. (19))
   /// SegSLAM eq. (19)'s p(|Sigma_X|) for a localisation-filter match; 1 for ICP.
   double spread_factor = 1.0;
 };
@@ -69,19 +69,18 @@ struct GridMatchTarget {
 GridMatchTarget match_target_of(const OccupancyGrid& map, const MatchingOptions& options,
                                 const LikelihoodFieldModel& likelihood);
 
-/// SegSLAM sec. 4.5: matches the window onto `candidate` (prepared as `target`) from `guess` (the robot in the candidate's
-/// frame as the map sample places it): a coarse search on the candidate's distance field
-/// seeds ICP on binned points; the result is weighted by SegSLAM eq. (18).
-WindowMatch match_window(const OccupancyGrid& candidate, const GridMatchTarget& target,
-                         const LookaheadWindow& window, const Pose2& guess, const MatchingOptions& options);
+/// SegSLAM sec. 4.5: matches the window onto `candidate` (prepared as `target`) from `guess` (the robot in the
+/// candidate's frame as the map sample places it): a coarse search on the candidate's distance field seeds ICP on
+/// binned points; the result is weighted by SegSLAM eq. (18).
+WindowMatch match_window(const OccupancyGrid& candidate, const GridMatchTarget& target, const LookaheadWindow& window,
+                         const Pose2& guess, const MatchingOptions& options);
 
 /// SegSLAM sec. 4.5.2, SegSLAM eq. (19): matches the window onto `candidate` with a separate localisation
 /// particle filter started around `guess` (spread over the coarse-search extent) and run over
 /// the window's scans; weighted by p(err_X) p(|Sigma_X|) p(tau^2), with err_X the RMS distance
 /// of the window's points to the candidate's obstacles at the filter's mean pose.
-WindowMatch localize_window(const OccupancyGrid& candidate, const LookaheadWindow& window,
-                            const Pose2& guess, const MatchingOptions& options,
-                            const LikelihoodFieldModel& likelihood, std::uint64_t seed);
+WindowMatch localize_window(const OccupancyGrid& candidate, const LookaheadWindow& window, const Pose2& guess,
+                            const MatchingOptions& options, const LikelihoodFieldModel& likelihood, std::uint64_t seed);
 
 /// SegSLAM sec. 6 merging, "adding the evidence grids": the cells the child observed (in its tiles
 /// not shared with `into`) that `into` (the parent's map) has never observed take the

@@ -18,8 +18,8 @@ namespace lookahead::slam::segslam {
 /// Poses guess + (i step, j step, 0, a angle_step) for |i|, |j| <= radius / step and
 /// |a| <= angle / angle_step.
 struct LevelPoseGrid {
-  double radius = 2.0, step = 0.3;        ///< [m]
-  double angle = 0.25, angle_step = 0.05; ///< [rad]
+  double radius = 2.0, step = 0.3;         ///< [m]
+  double angle = 0.25, angle_step = 0.05;  ///< [rad]
 };
 
 struct LevelCoarseResult {
@@ -69,11 +69,8 @@ LevelSubgrid covering_subgrid(const LevelSubgrid& first, const std::vector<Level
 /// have in common (one part spanning the grid is level_search_peaks bit for bit). Why: the
 /// wide re-entry searches of several particles over one candidate (wide_reentry.hpp) cover
 /// overlapping squares; each must find its own best peaks, and most of the cost is scoring.
-std::vector<std::vector<LevelCoarseResult>> level_search_peaks_within(const NearOccupiedField& field,
-                                                                      const Points3& points, const Pose4& guess,
-                                                                      const LevelPoseGrid& grid,
-                                                                      const std::vector<LevelSubgrid>& parts,
-                                                                      std::size_t count, double separation,
-                                                                      double angle_separation);
+std::vector<std::vector<LevelCoarseResult>> level_search_peaks_within(
+    const NearOccupiedField& field, const Points3& points, const Pose4& guess, const LevelPoseGrid& grid,
+    const std::vector<LevelSubgrid>& parts, std::size_t count, double separation, double angle_separation);
 
 }  // namespace lookahead::slam::segslam

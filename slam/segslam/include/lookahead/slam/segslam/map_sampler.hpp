@@ -36,23 +36,21 @@ struct PlacedSubmap {
 /// Grows a sample from `start` (an open submap not yet in `segmap`, or a stored one; its own
 /// id or kNoSubmap), in the start's frame, until `max_submaps` are placed or nothing is left.
 template <class Map, class Pose>
-std::vector<PlacedSubmap<Pose>> sample_local_map(const SegMap<Map, Pose>& segmap,
-                                                 const Submap<Map, Pose>& start, std::size_t start_id,
-                                                 std::size_t max_submaps, std::mt19937_64& rng) {
+std::vector<PlacedSubmap<Pose>> sample_local_map(const SegMap<Map, Pose>& segmap, const Submap<Map, Pose>& start,
+                                                 std::size_t start_id, std::size_t max_submaps, std::mt19937_64& rng) {
   using Key = std::pair<std::size_t, std::size_t>;
   std::vector<PlacedSubmap<Pose>> placed{{start_id, Pose{}, 0}};
   std::vector<Interval> chosen{start.interval};
   std::set<Key> segments{{start.interval.first_scan, start.interval.last_scan}};
-  auto submap_of = [&](std::size_t i) -> const Submap<Map, Pose>& {
-    return i == 0 ? start : segmap.at(placed[i].id);
-  };
+  auto submap_of = [&](std::size_t i) -> const Submap<Map, Pose>& { return i == 0 ? start : segmap.at(placed[i].id); };
   // Places one member of `id`'s segment (a random one unless `exact`) at the frame given by
   // `frame_of(member)`, when its segment is new and compatible.
   auto try_place = [&](std::size_t id, bool exact, int depth, std::size_t from, int link, auto&& frame_of) {
     if (!segmap.contains(id) || placed.size() >= max_submaps) return;
     const Interval& in = segmap.at(id).interval;
     if (segments.count({in.first_scan, in.last_scan})) return;
-    for (const Interval& c : chosen) if (!in.compatible_with(c)) return;
+    for (const Interval& c : chosen)
+      if (!in.compatible_with(c)) return;
     std::size_t pick = id;
     if (!exact) {
       const std::vector<std::size_t> members = segmap.segment_of(id);
@@ -81,8 +79,12 @@ std::vector<PlacedSubmap<Pose>> sample_local_map(const SegMap<Map, Pose>& segmap
       }
       std::shuffle(links.begin(), links.end(), rng);
       for (const auto& [id, kind] : links) {
-        if (kind == 0) try_place(id, false, depth, i, kind, [&](const auto& p) { return f.compose(s.entry).compose(p.exit.inverse()); });
-        if (kind == 1) try_place(id, false, depth, i, kind, [&](const auto& q) { return f.compose(s.exit).compose(q.entry.inverse()); });
+        if (kind == 0)
+          try_place(id, false, depth, i, kind,
+                    [&](const auto& p) { return f.compose(s.entry).compose(p.exit.inverse()); });
+        if (kind == 1)
+          try_place(id, false, depth, i, kind,
+                    [&](const auto& q) { return f.compose(s.exit).compose(q.entry.inverse()); });
         if (kind >= 2) try_place(id, true, depth, i, kind, [&](const auto&) { return f; });
       }
       for (std::size_t k = before; k < placed.size(); ++k) next.push_back(k);

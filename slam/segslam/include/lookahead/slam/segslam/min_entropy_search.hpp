@@ -27,8 +27,8 @@ struct MapSample {
   std::size_t particle = 0;                 ///< the particle whose submap the sample grew from
   std::vector<PlacedSubmap<Pose2>> placed;  ///< frames in the first submap's frame when reached
   ProbabilityMap map;
-  double entropy = 0.0;                     ///< SegSLAM eq. (22) [nats m^2]
-  bool chain = false;                       ///< the particle's own chain, not grown breadth-first
+  double entropy = 0.0;  ///< SegSLAM eq. (22) [nats m^2]
+  bool chain = false;    ///< the particle's own chain, not grown breadth-first
 };
 
 /// SegSLAM eq. (22) with gamma = the cell area: comparable across resolutions [nats m^2].

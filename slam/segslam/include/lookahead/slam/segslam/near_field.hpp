@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The cells of a 2D submap that lie within a distance of an obstacle (its distance field at
-// or below a squared distance), as rows of bits over the map's tiles, plus dilated copies ("is any cell of this W x W box near?")
-// that bound the coarse match score over a block of poses (coarse_search.hpp). A closed
-// submap never changes, so SegSLAM builds this once per match candidate.
+// or below a squared distance), as rows of bits over the map's tiles, plus dilated copies ("is any cell of this W x W
+// box near?") that bound the coarse match score over a block of poses (coarse_search.hpp). A closed submap never
+// changes, so SegSLAM builds this once per match candidate.
 #pragma once
 
 #include <cstdint>

@@ -7,10 +7,9 @@
 // candidate (OctreeMatchTarget) and every particle and attempt reads it.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "lookahead/slam/octree/evidence_octree.hpp"
 #include "lookahead/slam/segslam/structure_fit.hpp"

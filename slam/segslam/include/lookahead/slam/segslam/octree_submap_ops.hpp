@@ -60,22 +60,22 @@ double share_of(int count, const Points3& points);
 /// particle and attempt (a closed submap never changes).
 struct OctreeMatchTarget {
   NearOccupiedField field;  ///< with the coarse search's bound levels
-  IcpTarget3 icp;        ///< occupied voxel centres, binned
-  IcpTarget3 structure;  ///< those of them whose surface is structure, normals of their own
+  IcpTarget3 icp;           ///< occupied voxel centres, binned
+  IcpTarget3 structure;     ///< those of them whose surface is structure, normals of their own
 };
 OctreeMatchTarget match_target_of(const EvidenceOctree& map, const MatchingOptions& options);
 
 struct WindowMatch3 {
   bool ok = false;
-  Pose4 pose;                ///< the robot at the window's start, in the candidate's frame
-  double icp_error = 0.0;    ///< SegSLAM eq. (18) err_ICP: the structure points' mean error [m]
+  Pose4 pose;                     ///< the robot at the window's start, in the candidate's frame
+  double icp_error = 0.0;         ///< SegSLAM eq. (18) err_ICP: the structure points' mean error [m]
   double all_points_error = 0.0;  ///< ICP's mean error over all points, floor and ceiling too [m]
-  double translation = 0.0;  ///< tau_m: distance from the guess [m]
-  double weight = 0.0;       ///< SegSLAM eq. (18)
-  StructureFit structure;    ///< the window's structure at `pose`
-  double guess_score = 0.0;   ///< the coarse search's score (share of points near surfaces) at the guess
-  double coarse_score = 0.0;  ///< ... and at its best pose, which seeds ICP
-  const char* rejection = "";  ///< why the match failed (empty when ok): for the debug log
+  double translation = 0.0;       ///< tau_m: distance from the guess [m]
+  double weight = 0.0;            ///< SegSLAM eq. (18)
+  StructureFit structure;         ///< the window's structure at `pose`
+  double guess_score = 0.0;       ///< the coarse search's score (share of points near surfaces) at the guess
+  double coarse_score = 0.0;      ///< ... and at its best pose, which seeds ICP
+  const char* rejection = "";     ///< why the match failed (empty when ok): for the debug log
   /// Wide re-entry search only (wide_reentry.hpp): distinct poses that passed the tests.
   std::size_t modes = 0;
   /// SegSLAM eq. (19)'s p(|Sigma_X|) when the localisation filter matched (localization_match3.hpp);
@@ -117,7 +117,8 @@ std::vector<WindowMatch3> match_regions(const OctreeMatchTarget& target, const S
 /// match_window's ICP from `seed` and its acceptance tests, without the coarse search (its
 /// scores are left 0); tau and the SegSLAM eq. (18) weight are taken against `guess`.
 WindowMatch3 refine_match(const OctreeMatchTarget& target, const SweepWindow& window, const Pose4& seed,
-                          const Pose4& guess, const MatchingOptions& options, const StructureTestOptions& structure = {});
+                          const Pose4& guess, const MatchingOptions& options,
+                          const StructureTestOptions& structure = {});
 /// The acceptance tests and SegSLAM eq. (18) weight of the window placed by `fit` (ICP's result, or a
 /// pose found otherwise with point_to_plane_fit's statistics): refine_match after its ICP.
 WindowMatch3 judge_fit(const OctreeMatchTarget& target, const SweepWindow& window, const Icp3Result& fit,

@@ -8,10 +8,9 @@
 // along walls and floors.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "lookahead/slam/geometry/pose4.hpp"
 

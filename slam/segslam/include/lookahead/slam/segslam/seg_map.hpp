@@ -37,12 +37,14 @@ class SegMap {
   [[nodiscard]] const SubmapT& at(std::size_t id) const { return *submaps_.at(id); }
   [[nodiscard]] std::size_t id_bound() const { return submaps_.size(); }
   [[nodiscard]] std::size_t live_count() const {
-    return static_cast<std::size_t>(std::count_if(submaps_.begin(), submaps_.end(), [](const auto& s) { return s != nullptr; }));
+    return static_cast<std::size_t>(
+        std::count_if(submaps_.begin(), submaps_.end(), [](const auto& s) { return s != nullptr; }));
   }
   [[nodiscard]] std::size_t segment_count() const { return segments_.size(); }
   /// Live submaps that hold a map of their own (not merged into a parent).
   [[nodiscard]] std::size_t map_count() const {
-    return static_cast<std::size_t>(std::count_if(submaps_.begin(), submaps_.end(), [](const auto& s) { return s && !s->merged; }));
+    return static_cast<std::size_t>(
+        std::count_if(submaps_.begin(), submaps_.end(), [](const auto& s) { return s && !s->merged; }));
   }
 
   /// Merges the stored match child `id` into its parent (SegSLAM sec. 6: "submaps can be quickly
@@ -79,7 +81,8 @@ class SegMap {
     const auto it = segments_.find(key(at(id).interval));
     std::vector<std::size_t> out;
     if (it != segments_.end()) {
-      for (std::size_t m : it->second) if (contains(m)) out.push_back(m);
+      for (std::size_t m : it->second)
+        if (contains(m)) out.push_back(m);
     }
     return out;
   }
@@ -105,7 +108,8 @@ class SegMap {
   std::size_t prune(const std::vector<std::size_t>& roots) {
     std::set<Key> viable;
     std::vector<std::size_t> stack;
-    for (std::size_t r : roots) if (contains(r)) stack.push_back(r);
+    for (std::size_t r : roots)
+      if (contains(r)) stack.push_back(r);
     while (!stack.empty()) {
       const std::size_t id = stack.back();
       stack.pop_back();
@@ -138,7 +142,8 @@ class SegMap {
     std::vector<std::size_t> out;
     const auto it = links.find(id);
     if (it != links.end()) {
-      for (std::size_t m : it->second) if (contains(m)) out.push_back(m);
+      for (std::size_t m : it->second)
+        if (contains(m)) out.push_back(m);
     }
     return out;
   }

@@ -11,13 +11,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <future>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
-#include <tuple>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "lookahead/slam/grid/occupancy_grid.hpp"
@@ -36,11 +36,11 @@ using GridSubmap = Submap<OccupancyGrid, Pose2>;
 using GridSegMap = SegMap<OccupancyGrid, Pose2>;
 
 struct SegParticle {
-  Pose2 pose;           ///< x_t in its submap's frame
-  GridSubmap submap;    ///< the open submap theta_i it maps into
+  Pose2 pose;         ///< x_t in its submap's frame
+  GridSubmap submap;  ///< the open submap theta_i it maps into
   double log_weight = 0.0;
-  int submap_updates = 0;      ///< filter updates in the open submap
-  double motion_error = 0.0;   ///< SegSLAM eq. (13)-(14), accumulated in the open submap [m]
+  int submap_updates = 0;     ///< filter updates in the open submap
+  double motion_error = 0.0;  ///< SegSLAM eq. (13)-(14), accumulated in the open submap [m]
   /// err_ICP of the match that opened the submap [m]; infinite for a fresh submap.
   double entry_error = std::numeric_limits<double>::infinity();
 };
@@ -54,12 +54,12 @@ struct MatchEvent {
 
 struct SegSlamStatistics {
   std::size_t scans = 0, updates = 0, resamplings = 0, match_failures = 0;
-  std::size_t segmentations = 0;     ///< particle submaps started fresh
-  std::size_t matches = 0;           ///< particle submaps started as a match
-  std::size_t match_attempts = 0;    ///< candidates matched by ICP
-  std::size_t pruned = 0;            ///< non-viable submaps dropped
-  std::size_t locked = 0;            ///< re-entered submaps locked (localisation only)
-  std::size_t merged = 0;            ///< closed re-entered submaps merged into their parent
+  std::size_t segmentations = 0;   ///< particle submaps started fresh
+  std::size_t matches = 0;         ///< particle submaps started as a match
+  std::size_t match_attempts = 0;  ///< candidates matched by ICP
+  std::size_t pruned = 0;          ///< non-viable submaps dropped
+  std::size_t locked = 0;          ///< re-entered submaps locked (localisation only)
+  std::size_t merged = 0;          ///< closed re-entered submaps merged into their parent
   std::vector<double> neff;
   std::vector<MatchEvent> match_events;
 };
@@ -98,7 +98,8 @@ class SegSlam {
   void update(std::size_t scan);
   LookaheadWindow window_after(std::size_t scan) const;
   /// `window` builds the look-ahead window on first use (most updates neither score nor match).
-  Transition predict_submap(SegParticle& p, const std::function<const LookaheadWindow&()>& window, std::mt19937_64& rng);
+  Transition predict_submap(SegParticle& p, const std::function<const LookaheadWindow&()>& window,
+                            std::mt19937_64& rng);
   std::vector<WindowMatch> match_candidates(const SegParticle& p, const LookaheadWindow& w,
                                             std::vector<std::size_t>& ids, std::mt19937_64& rng);
   void store_closed(SegParticle& p, Transition& t);
@@ -124,8 +125,8 @@ class SegSlam {
   std::vector<SegParticle> particles_;
   GridSegMap segmap_;
   std::vector<LaserScan> scans_;
-  std::size_t next_pending_ = 0;  ///< the oldest scan not yet considered for an update
-  std::size_t last_update_ = 0;   ///< the scan of the last filter update
+  std::size_t next_pending_ = 0;               ///< the oldest scan not yet considered for an update
+  std::size_t last_update_ = 0;                ///< the scan of the last filter update
   std::vector<double> motion_error_sum_{0.0};  ///< SegSLAM eq. (13)-(14) error accumulated up to each scan [m]
   std::mt19937_64 rng_;
   SegSlamStatistics stats_;

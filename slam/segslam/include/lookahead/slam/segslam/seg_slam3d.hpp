@@ -99,12 +99,12 @@ struct MatchEvent3 {
   std::size_t sweep = 0;
   std::size_t candidate = 0;
   double weight = 0.0;
-  double icp_error = 0.0;    ///< SegSLAM eq. (18) err_ICP (structure points) [m]
+  double icp_error = 0.0;         ///< SegSLAM eq. (18) err_ICP (structure points) [m]
   double all_points_error = 0.0;  ///< ICP's mean error over all points [m]
-  double translation = 0.0;  ///< SegSLAM eq. (18) tau [m]
-  Pose4 pose;                ///< the re-entry pose, in the candidate's frame
-  Pose4 guess;               ///< the particle's pose placed there by the map sample
-  StructureFit structure;    ///< the window's walls, columns and cars at `pose`
+  double translation = 0.0;       ///< SegSLAM eq. (18) tau [m]
+  Pose4 pose;                     ///< the re-entry pose, in the candidate's frame
+  Pose4 guess;                    ///< the particle's pose placed there by the map sample
+  StructureFit structure;         ///< the window's walls, columns and cars at `pose`
   /// The candidate's path pose (its own or an ancestor's, same frame) nearest to `pose`:
   /// reference.between(pose) is the match's claim about where the robot is now relative to
   /// where it was at reference_sweep.
@@ -128,8 +128,8 @@ struct SegSlam3dStatistics {
   std::vector<MatchEvent3> match_events;  ///< the matches taken
   std::vector<MatchEvent3> match_offers;  ///< every match offered to a particle, taken or not
   std::vector<MatchAttempt3> attempts;    ///< every candidate considered (record_attempts only)
-  double matching_seconds = 0;  ///< summed over threads: building targets, coarse search, ICP
-  double wide_matching_seconds = 0;  ///< of matching_seconds, the wide searches' (wide_reentry.hpp)
+  double matching_seconds = 0;            ///< summed over threads: building targets, coarse search, ICP
+  double wide_matching_seconds = 0;       ///< of matching_seconds, the wide searches' (wide_reentry.hpp)
 };
 
 class SegSlam3d {
@@ -167,13 +167,13 @@ class SegSlam3d {
   /// after it, with the other particles' of the same segment (seg_slam3d_wide.cpp).
   struct WideRequest {
     std::size_t candidate = 0;
-    Pose4 guess;              ///< the map sample's
-    MatchingOptions options;  ///< its reach (wide_reach)
-    std::size_t attempt = 0;  ///< index into the transition's attempts (record_attempts)
-    double pending_weight = 0.0;  ///< SegSLAM eq. (18) weight of the pending re-entry confirmed this attempt
-    Pose4 pose;               ///< the particle's when it asked
+    Pose4 guess;                   ///< the map sample's
+    MatchingOptions options;       ///< its reach (wide_reach)
+    std::size_t attempt = 0;       ///< index into the transition's attempts (record_attempts)
+    double pending_weight = 0.0;   ///< SegSLAM eq. (18) weight of the pending re-entry confirmed this attempt
+    Pose4 pose;                    ///< the particle's when it asked
     std::optional<Pose4> carried;  ///< the origin of the fresh submap the particle started since
-    bool dropped = false;     ///< the particle took a match since: the re-entry goes nowhere
+    bool dropped = false;          ///< the particle took a match since: the re-entry goes nowhere
   };
   /// One wide search for the requests on copies of one segment (seg_slam3d_wide.cpp).
   struct WideSearch {
@@ -202,7 +202,7 @@ class SegSlam3d {
   /// cell: each guess's rounded region answered from a shared grid (match_regions).
   struct CappedSearch {
     std::size_t searched = 0;
-    MatchingOptions options;           ///< the searched submap's reach
+    MatchingOptions options;            ///< the searched submap's reach
     std::vector<LevelSubgrid> regions;  ///< distinct rounded guesses
     std::vector<WindowMatch3> results;  ///< per region
   };
@@ -239,7 +239,8 @@ class SegSlam3d {
                              const SweepWindow& w);
   [[nodiscard]] std::uint64_t localization_seed(const MatchKey& key) const;
   std::shared_ptr<const OctreeMatchTarget> target_of(std::size_t candidate);
-  std::optional<WindowMatch3> confirm_pending(SegParticle3& p, const SweepWindow& w, std::vector<MatchAttempt3>& attempts);
+  std::optional<WindowMatch3> confirm_pending(SegParticle3& p, const SweepWindow& w,
+                                              std::vector<MatchAttempt3>& attempts);
   [[nodiscard]] double error_since(std::size_t candidate) const;
   [[nodiscard]] MatchingOptions candidate_options(std::size_t candidate) const;
   [[nodiscard]] std::optional<MatchingOptions> wide_options(double chain_error) const;

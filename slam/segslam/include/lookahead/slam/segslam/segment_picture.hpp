@@ -14,14 +14,13 @@
 namespace lookahead::slam::segslam {
 
 struct SegmentedPath {
-  std::vector<std::vector<Pose2>> pieces;  ///< one per submap of the chain, in order
+  std::vector<std::vector<Pose2>> pieces;          ///< one per submap of the chain, in order
   std::vector<std::pair<double, double>> matches;  ///< where the chain re-entered a submap [m]
   /// What the pieces are, for the legend.
   std::string label = "SegSLAM trajectory, one colour per submap";
 };
 
-void write_segment_picture(const std::string& png_path, const ProbabilityMap& map,
-                           const std::vector<Pose2>& odometry, const SegmentedPath& path,
-                           const std::string& title);
+void write_segment_picture(const std::string& png_path, const ProbabilityMap& map, const std::vector<Pose2>& odometry,
+                           const SegmentedPath& path, const std::string& title);
 
 }  // namespace lookahead::slam::segslam

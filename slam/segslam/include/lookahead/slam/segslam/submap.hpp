@@ -38,8 +38,8 @@ struct Interval {
 template <class Map, class Pose>
 struct Submap {
   Interval interval;
-  Pose entry;  ///< T_s: the particle's pose at interval.first_scan, in this submap's frame
-  Pose exit;   ///< T_e: its pose at interval.last_scan (set when the submap is closed)
+  Pose entry;                           ///< T_s: the particle's pose at interval.first_scan, in this submap's frame
+  Pose exit;                            ///< T_e: its pose at interval.last_scan (set when the submap is closed)
   std::size_t predecessor = kNoSubmap;  ///< the submap the particle left to enter this one
   std::size_t parent = kNoSubmap;       ///< the matched submap this one copies (same frame)
   Map map;

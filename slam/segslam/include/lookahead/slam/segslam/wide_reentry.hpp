@@ -100,8 +100,8 @@ void validate(const WideReentryOptions& options);
 
 /// The wide stage's options for a candidate left `error_since` [m] of SegSLAM eq. (13)-(14) error ago, or
 /// nothing when trigger_sigmas sigma_tau do not exceed `narrow_cap` (the capped search of
-/// candidate_reach covers most of p(tau^2)) or the stage is off. SegSLAM eq. (18)'s sigma_tau is candidate_reach's; the proximity
-/// radius grows by as much as the search's reach.
+/// candidate_reach covers most of p(tau^2)) or the stage is off. SegSLAM eq. (18)'s sigma_tau is candidate_reach's; the
+/// proximity radius grows by as much as the search's reach.
 std::optional<MatchingOptions> wide_reach(const MatchingOptions& base, double error_since, double narrow_cap,
                                           const WideReentryOptions& wide);
 
