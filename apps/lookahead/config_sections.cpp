@@ -9,6 +9,7 @@
 #include "lookahead/pipeline/pslam_config.hpp"
 #include "lookahead/slam/hybrid/hybrid_config.hpp"
 #include "lookahead/slam/rbpf3d/slam3d_config.hpp"
+#include "lookahead/slam/segslam/seg_slam3d.hpp"
 #include "lookahead/slam/segslam/segslam_config.hpp"
 
 namespace lookahead::app {
@@ -19,6 +20,12 @@ const std::vector<ConfigSection>& config_sections() {
        [] { return pipeline::dump_pslam_options({}); }, [](const std::string& f) { pipeline::load_pslam_options(f); }},
       {"segslam", "`lookahead slam LOG --method segslam --segslam-config FILE`: SegSLAM 2D",
        [] { return "# lookahead segslam defaults (lookahead config dump segslam)\n" + slam::dump_segslam_options({}); },
+       [](const std::string& f) { slam::load_segslam_options(f); }},
+      {"segslam3d", "`lookahead slam3d INPUT --method segslam --segslam-config FILE`: SegSLAM 3D",
+       [] {
+         return "# lookahead segslam3d defaults (lookahead config dump segslam3d)\n" +
+                slam::dump_segslam_options(slam::segslam::segslam3d_defaults());
+       },
        [](const std::string& f) { slam::load_segslam_options(f); }},
       {"hybrid", "`lookahead hybrid-sim --config FILE` and `lookahead slam LOG --method hybrid`",
        [] {

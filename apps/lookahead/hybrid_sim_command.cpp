@@ -34,7 +34,6 @@ struct HybridSimArgs {
   int particles = -1;
   int trial = -1;
   std::vector<std::string> filters;
-  bool dump_config = false;
   bool no_study = false;
   bool no_figures = false;
   bool no_adaptive = false;
@@ -193,10 +192,6 @@ void write_table(const std::string& out, const StudyResult& r, const HybridConfi
 
 int run_hybrid_sim(const HybridSimArgs& a) {
   const HybridConfig c = config_from(a);
-  if (a.dump_config) {
-    fmt::print("# lookahead HybridSLAM defaults (lookahead hybrid-sim --dump-config)\n{}", dump_hybrid_config(c));
-    return 0;
-  }
   std::filesystem::create_directories(a.out);
   if (a.trial >= 0) {
     const auto kinds =
@@ -246,7 +241,6 @@ Run add_hybrid_sim_command(CLI::App& app) {
                  "re-run one trial of the first clutter level alone with a per-step trace (trialN_FILTER.csv)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--filters", args->filters, "filters to run (FASTSLAM,EKF,HYBRID,HYBRID-ADAPTIVE)")->delimiter(',');
-  app.add_flag("--dump-config", args->dump_config, "print every option with its default (YAML)");
   app.add_flag("--no-study", args->no_study, "only the figures and the speed run");
   app.add_flag("--no-figures", args->no_figures, "only Table 1");
   app.add_flag("--no-adaptive", args->no_adaptive, "leave the adaptive-fusion HYBRID out of the study");

@@ -37,7 +37,6 @@ struct Slam3dArgs {
   long long data_seed = 1;
   int threads = -1;
   std::size_t max_sweeps = 0;
-  bool dump_config = false;
   std::string segslam_config;         ///< --method segslam: YAML on top of segslam3d_defaults()
   int map_samples = -1;               ///< --method segslam: offline samples (-1: the config's)
   double max_search_radius = -1.0;    ///< --method segslam: reach cap (< 0: the default)
@@ -183,12 +182,6 @@ slam::Slam3dOptions options_from(const Slam3dArgs& a) {
 }
 
 int run_slam3d(const Slam3dArgs& a) {
-  if (a.dump_config) {
-    // With --method segslam: SegSLAM's own options (config/segslam/garage3d.yaml).
-    std::fputs(a.method == "segslam" ? dump_segslam3d_defaults().c_str() : slam::dump_slam3d_options({}).c_str(),
-               stdout);
-    return 0;
-  }
   const slam::Slam3dOptions options = options_from(a);
   const Input in = read_input(a, options);
   if (a.method == "segslam") {
@@ -234,7 +227,7 @@ Run add_slam3d_command(CLI::App& app) {
   app.add_option("--threads", args->threads, "worker threads, 0 = all cores");
   app.add_option("--max-sweeps", args->max_sweeps, "stop after this many sweeps (0 = all)");
   app.add_option("--segslam-config", args->segslam_config,
-                 "--method segslam: SegSLAM YAML (see config/segslam/garage3d.yaml)");
+                 "--method segslam: SegSLAM YAML (defaults: lookahead config dump segslam3d)");
   app.add_option("--map-samples", args->map_samples,
                  "--method segslam: offline map samples for the min-entropy map.bt");
   app.add_option("--max-search-radius", args->max_search_radius,
@@ -248,7 +241,6 @@ Run add_slam3d_command(CLI::App& app) {
   app.add_flag("--search-per-particle", args->search_per_particle,
                "--method segslam: every particle searches its own copy of a candidate segment (default: the "
                "copies of one segment share the searches that find nothing; matches are fitted per copy)");
-  app.add_flag("--dump-config", args->dump_config, "print the documented default options and exit");
   return [args] { return run_slam3d(*args); };
 }
 

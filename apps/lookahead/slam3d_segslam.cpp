@@ -205,8 +205,6 @@ void add_errors(nlohmann::json& j, const slam::RangeLog3& log, const SegSlam3d& 
 
 }  // namespace
 
-std::string dump_segslam3d_defaults() { return slam::dump_segslam_options(slam::segslam::segslam3d_defaults()); }
-
 void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const slam::Slam3dOptions& o) {
   slam::segslam::SegSlam3dOptions options;
   options.filter = o.filter;

@@ -27,9 +27,6 @@ struct SegSlam3dRun {
   bool search_per_particle = false;
 };
 
-/// segslam3d_defaults() as YAML (config/segslam/garage3d.yaml).
-std::string dump_segslam3d_defaults();
-
 /// Runs the filter over `log`, then the offline search, and writes the outputs.
 void run_segslam3d(const SegSlam3dRun& run, const slam::RangeLog3& log, const slam::Slam3dOptions& options);
 

@@ -38,7 +38,7 @@ std::string read(const fs::path& p) {
 const fs::path kSource = LOOKAHEAD_SOURCE_DIR;
 
 TEST(ConfigCli, EveryShippedDefaultFileIsTheDump) {
-  for (const char* section : {"slam", "segslam", "hybrid", "slam3d", "mission"}) {
+  for (const char* section : {"slam", "segslam", "segslam3d", "hybrid", "slam3d", "mission"}) {
     const Result r = run(std::string("config dump ") + section);
     ASSERT_EQ(r.code, 0) << r.output;
     EXPECT_EQ(r.output, read(kSource / "config" / section / "default.yaml"))

@@ -26,7 +26,7 @@ HybridConfig load_hybrid_config(const std::string& path, const HybridConfig& bas
 /// `study` section (a hybrid-sim file) is refused with its file and line.
 HybridConfig load_hybrid_log_config(const std::string& path, const HybridConfig& base);
 HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& source, const HybridConfig& base = {});
-/// Every option with its default and unit (`lookahead hybrid-sim --dump-config`).
+/// Every option with its default and unit (`lookahead config dump hybrid`).
 std::string dump_hybrid_config(const HybridConfig& config);
 
 }  // namespace lookahead::slam::hybrid

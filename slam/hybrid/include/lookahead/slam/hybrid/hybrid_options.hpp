@@ -2,7 +2,7 @@
 // Parameters of HybridSLAM (Brooks & Bailey, "HybridSLAM: Combining FastSLAM and EKF-SLAM
 // for reliable mapping"): the FastSLAM 2.0 front-end, feature existence (HybridSLAM eq. (11)), sub-map
 // fusion (HybridSLAM sec. 4) and the range-bearing sensor. Defaults are HybridSLAM sec. 5 values;
-// config/hybrid/default.yaml mirrors them (`lookahead hybrid-sim --dump-config`).
+// config/hybrid/default.yaml mirrors them (`lookahead config dump hybrid`).
 #pragma once
 
 #include <cstdint>

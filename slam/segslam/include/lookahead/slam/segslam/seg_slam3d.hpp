@@ -71,7 +71,7 @@ struct SegSlam3dExtras {
 
 /// The SegSLAM options for 3D sweeps: the 2D defaults with the bins, ICP and SegSLAM eq. (18) scales
 /// of 0.2 m voxels, and the look-ahead and periods of one sweep per second. Mirrored in
-/// config/segslam/garage3d.yaml (a test checks).
+/// config/segslam3d/default.yaml (a test checks).
 SegSlamOptions segslam3d_defaults();
 
 struct SegSlam3dOptions {
