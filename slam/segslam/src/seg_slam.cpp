@@ -385,7 +385,7 @@ void SegSlam::store_closed(SegParticle& p, Transition& t) {
   }
 }
 
-// SegSLAM sec. 4: the RBPF's selective resampling (Grisetti et al. 2007, sec. IV step 5); a
+// SegSLAM eq. (6)-(7): the RBPF's selective resampling (Grisetti et al. 2007, sec. IV step 5); a
 // resampled particle shares its submap chain with its parent.
 void SegSlam::resample_if_needed() {
   shift_log_weights(particles_);

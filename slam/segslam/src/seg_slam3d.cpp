@@ -299,7 +299,7 @@ void SegSlam3d::update(std::size_t k) {
   store_transitions(transitions);
   last_update_ = k;
   ++stats_.updates;
-  // SegSLAM sec. 4: the RBPF's selective resampling (Grisetti et al. 2007, sec. IV step 5).
+  // SegSLAM eq. (6)-(7): the RBPF's selective resampling (Grisetti et al. 2007, sec. IV step 5).
   shift_log_weights(particles_);
   bool resampled = false;
   stats_.neff.push_back(resample_if_degenerate(particles_, options_.filter.resample_threshold, rng_, resampled));
