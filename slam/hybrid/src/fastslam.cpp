@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "correspondence_vote.hpp"
+#include "lookahead/slam/rbpf/particle_filter.hpp"
 #include "moment_matching.hpp"
 #include "pose_sampling.hpp"
 
@@ -180,24 +181,15 @@ void FastSlam::cull() {
   }
 }
 
+// Selective low-variance resampling on the linear weights (Grisetti et al. 2007, sec. IV
+// step 5, N_eff of eq. (20)); every drawn particle gets the weight 1/P.
 void FastSlam::resample_if_degenerate() {
-  double sum_sq = 0.0;
-  for (const auto& p : particles_) sum_sq += p.weight * p.weight;
-  const double n = static_cast<double>(particles_.size());
-  if (1.0 / sum_sq >= options_.fastslam.resample_threshold * n) return;
-  // Low-variance (systematic) resampling.
-  std::vector<Particle> next;
-  next.reserve(particles_.size());
-  const double step = 1.0 / n;
-  double u = std::uniform_real_distribution<double>(0.0, step)(rng_);
-  double c = particles_[0].weight;
-  std::size_t i = 0;
-  for (std::size_t m = 0; m < particles_.size(); ++m, u += step) {
-    while (u > c && i + 1 < particles_.size()) c += particles_[++i].weight;
-    next.push_back(particles_[i]);
-    next.back().weight = step;
-  }
-  particles_ = std::move(next);
+  std::vector<double> w;
+  w.reserve(particles_.size());
+  for (const auto& p : particles_) w.push_back(p.weight);
+  if (!should_resample(effective_sample_size(w), options_.fastslam.resample_threshold, particles_.size())) return;
+  const double equal = 1.0 / static_cast<double>(particles_.size());
+  draw_particles(particles_, low_variance_resample(w, rng_), [&](Particle& p) { p.weight = equal; });
   ++resamplings_;
 }
 

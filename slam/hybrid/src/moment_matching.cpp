@@ -6,6 +6,7 @@
 #include <map>
 
 #include "jcbb.hpp"
+#include "lookahead/slam/rbpf/particle_filter.hpp"
 
 namespace lookahead::slam::hybrid {
 namespace {
@@ -73,9 +74,7 @@ std::vector<CommonFeature> common_features(const std::vector<Particle>& particle
 
 PoseGaussian moment_match_pose(const std::vector<Particle>& particles) {
   const double total = total_weight(particles);
-  const auto best = std::max_element(particles.begin(), particles.end(),
-                                     [](const Particle& a, const Particle& b) { return a.weight < b.weight; });
-  const double ref = best->pose.theta;
+  const double ref = particles[best_particle_index(particles, [](const Particle& p) { return p.weight; })].pose.theta;
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const auto& p : particles) mean += p.weight / total * pose_vector(p.pose, ref);
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();

@@ -10,8 +10,8 @@
 
 #include "lookahead/slam/limits/input_limits.hpp"
 #include "lookahead/slam/parallel/parallel_errors.hpp"
+#include "lookahead/slam/rbpf/particle_filter.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
-#include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/sensor/scan_inserter.hpp"
 
 namespace lookahead::slam {
@@ -175,19 +175,15 @@ void Rbpf::clear_hypotheses() {
   for (Particle& p : particles_) p.hypothesis_offsets.clear();
 }
 
+// Grisetti et al. 2007, sec. IV step 5: N_eff (eq. (20)) decides whether the set is redrawn.
 void Rbpf::resample_if_needed() {
+  shift_log_weights(particles_);
   bool resampled = false;
   stats_.neff.push_back(resample_if_degenerate(particles_, options_.resample_threshold, rng_, resampled));
   if (resampled) ++stats_.resamplings;
 }
 
-std::size_t Rbpf::best_particle() const {
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < particles_.size(); ++i) {
-    if (particles_[i].log_weight > particles_[best].log_weight) best = i;
-  }
-  return best;
-}
+std::size_t Rbpf::best_particle() const { return best_particle_index(particles_); }
 
 Pose2 Rbpf::current_pose() const {
   if (particles_.empty()) return {};
@@ -196,33 +192,20 @@ Pose2 Rbpf::current_pose() const {
 
 Pose2 Rbpf::mean_pose() const {
   if (particles_.empty()) return {};
-  std::vector<double> logw;
-  for (const Particle& p : particles_) logw.push_back(p.log_weight);
-  const std::vector<double> w = normalized_weights(logw);
-  double x = 0, y = 0, c = 0, s = 0;
-  for (std::size_t m = 0; m < particles_.size(); ++m) {
-    const Pose2& q = particles_[m].pose;
-    x += w[m] * q.x, y += w[m] * q.y, c += w[m] * std::cos(q.theta), s += w[m] * std::sin(q.theta);
-  }
-  return Pose2{x, y, std::atan2(s, c)}.compose(last_update_odometry_.between(odometry_.back()));
+  const Pose2 mean =
+      weighted_mean_pose(particle_weights(particles_), [&](std::size_t m) { return particles_[m].pose; });
+  return mean.compose(last_update_odometry_.between(odometry_.back()));
 }
 
 std::vector<Pose2> Rbpf::best_trajectory() const {
-  std::vector<Pose2> out(timestamps_.size());
-  if (particles_.empty()) return out;
-  std::vector<const TrajectoryNode*> nodes;
-  for (const TrajectoryNode* n = particles_[best_particle()].trajectory.get(); n; n = n->parent.get()) {
-    nodes.push_back(n);
+  if (particles_.empty()) return std::vector<Pose2>(timestamps_.size());
+  std::vector<std::pair<std::size_t, Pose2>> updates;
+  for (const TrajectoryNode* n : chain_oldest_first(particles_[best_particle()].trajectory.get())) {
+    updates.emplace_back(n->scan_index, n->pose);
   }
-  std::reverse(nodes.begin(), nodes.end());
-  std::size_t k = 0;
-  for (std::size_t s = 0; s < out.size(); ++s) {
-    while (k + 1 < nodes.size() && nodes[k + 1]->scan_index <= s) ++k;
-    const TrajectoryNode& anchor = *nodes[k];
-    // Between updates: the anchor pose moved by the odometry since the anchor's scan.
-    out[s] = anchor.pose.compose(odometry_[anchor.scan_index].between(odometry_[s]));
-  }
-  return out;
+  // Between updates: the update's pose moved by the odometry since its scan.
+  return poses_at_every_scan(updates, timestamps_.size(),
+                             [&](std::size_t from, std::size_t to) { return odometry_[from].between(odometry_[to]); });
 }
 
 }  // namespace lookahead::slam

@@ -8,8 +8,8 @@
 
 #include "lookahead/slam/eval/map_entropy.hpp"
 #include "lookahead/slam/parallel/parallel_errors.hpp"
+#include "lookahead/slam/rbpf/particle_filter.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
-#include "lookahead/slam/rbpf/resampler.hpp"
 #include "placed_paths.hpp"
 
 namespace lookahead::slam::segslam {
@@ -64,9 +64,7 @@ std::vector<Pose2> sample_trajectory_at_every_scan(const SegSlam& filter, const 
 }
 
 MinEntropyResult min_entropy_search(const SegSlam& filter, int samples, std::uint64_t seed, int threads) {
-  std::vector<double> logw;
-  for (const SegParticle& p : filter.particles()) logw.push_back(p.log_weight);
-  const std::vector<double> w = normalized_weights(logw);
+  const std::vector<double> w = particle_weights(filter.particles());
   std::vector<MapSample> drawn(static_cast<std::size_t>(samples));
   const int t = threads > 0 ? threads : omp_get_num_procs();
   ParallelErrors errors;

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "lookahead/slam/rbpf/particle_filter.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
-#include "lookahead/slam/rbpf/resampler.hpp"
 #include "placed_paths.hpp"
 
 namespace lookahead::slam::segslam {
@@ -59,9 +59,7 @@ SegmentedPath sample_paths(const SegSlam3d& filter, const OctreeMapSample& sampl
 }
 
 OctreeMinEntropyResult min_entropy_search(const SegSlam3d& filter, int samples, std::uint64_t seed) {
-  std::vector<double> logw;
-  for (const SegParticle3& p : filter.particles()) logw.push_back(p.log_weight);
-  const std::vector<double> w = normalized_weights(logw);
+  const std::vector<double> w = particle_weights(filter.particles());
   OctreeMinEntropyResult r;
   // samples 0: the chain alone (offline.particle_chain; validated), else at least one sample.
   const int drawn = filter.options().segslam.offline.particle_chain ? std::max(0, samples) : std::max(1, samples);

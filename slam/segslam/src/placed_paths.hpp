@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "lookahead/slam/rbpf/particle_filter.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/segslam/segment_picture.hpp"
 #include "trajectory_reconstruction.hpp"
@@ -98,14 +99,7 @@ std::vector<Pose> placed_path_at_every_scan(const SegMap<Map, Pose>& segmap, con
   }
   // By scan; at a switch scan the newer submap's pose stays last, so it is the one used.
   std::stable_sort(at.begin(), at.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<Pose> out;
-  if (at.empty()) return out;
-  std::size_t k = 0;  // the latest pose at or before the scan (the first one before it)
-  for (std::size_t scan = 0; scan < scans; ++scan) {
-    while (k + 1 < at.size() && at[k + 1].first <= scan) ++k;
-    out.push_back(at[k].second.compose(motion(at[k].first, scan)));
-  }
-  return out;
+  return poses_at_every_scan(at, scans, std::forward<Motion>(motion));
 }
 
 }  // namespace lookahead::slam::segslam

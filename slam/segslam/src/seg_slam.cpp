@@ -15,8 +15,8 @@
 #include "compute_once.hpp"
 #include "lookahead/slam/limits/input_limits.hpp"
 #include "lookahead/slam/parallel/parallel_errors.hpp"
+#include "lookahead/slam/rbpf/particle_filter.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
-#include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "lookahead/slam/sensor/scan_inserter.hpp"
 #include "segmentation.hpp"
@@ -385,19 +385,16 @@ void SegSlam::store_closed(SegParticle& p, Transition& t) {
   }
 }
 
+// SegSLAM eq. (6)-(7): the RBPF's selective resampling (Grisetti et al. 2007, sec. IV step 5); a
+// resampled particle shares its submap chain with its parent.
 void SegSlam::resample_if_needed() {
+  shift_log_weights(particles_);
   bool resampled = false;
   stats_.neff.push_back(resample_if_degenerate(particles_, rbpf_.resample_threshold, rng_, resampled));
   if (resampled) ++stats_.resamplings;
 }
 
-std::size_t SegSlam::best_particle() const {
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < particles_.size(); ++i) {
-    if (particles_[i].log_weight > particles_[best].log_weight) best = i;
-  }
-  return best;
-}
+std::size_t SegSlam::best_particle() const { return best_particle_index(particles_); }
 
 std::vector<std::pair<std::size_t, Pose2>> SegSlam::trajectory(std::size_t m) const {
   const auto chain = temporal_chain(segmap_, particles_.at(m).submap);
@@ -405,15 +402,9 @@ std::vector<std::pair<std::size_t, Pose2>> SegSlam::trajectory(std::size_t m) co
 }
 
 std::vector<Pose2> SegSlam::trajectory_at_every_scan(std::size_t m) const {
-  const auto updates = trajectory(m);
-  std::vector<Pose2> out(scans_.size());
-  std::size_t k = 0;
-  for (std::size_t s = 0; s < scans_.size(); ++s) {
-    while (k + 1 < updates.size() && updates[k + 1].first <= s) ++k;
-    const auto& [scan, pose] = updates[k];
-    out[s] = pose.compose(scans_[scan].odometry.between(scans_[s].odometry));
-  }
-  return out;
+  return poses_at_every_scan(trajectory(m), scans_.size(), [&](std::size_t from, std::size_t to) {
+    return scans_[from].odometry.between(scans_[to].odometry);
+  });
 }
 
 Pose2 SegSlam::global_pose(std::size_t m) const {
@@ -422,15 +413,7 @@ Pose2 SegSlam::global_pose(std::size_t m) const {
 }
 
 Pose2 SegSlam::estimate() const {
-  std::vector<double> logw;
-  for (const SegParticle& p : particles_) logw.push_back(p.log_weight);
-  const std::vector<double> w = normalized_weights(logw);
-  double x = 0, y = 0, c = 0, s = 0;
-  for (std::size_t m = 0; m < particles_.size(); ++m) {
-    const Pose2 g = global_pose(m);
-    x += w[m] * g.x, y += w[m] * g.y, c += w[m] * std::cos(g.theta), s += w[m] * std::sin(g.theta);
-  }
-  const Pose2 mean{x, y, std::atan2(s, c)};
+  const Pose2 mean = weighted_mean_pose(particle_weights(particles_), [&](std::size_t m) { return global_pose(m); });
   return mean.compose(scans_[last_update_].odometry.between(scans_.back().odometry));
 }
 

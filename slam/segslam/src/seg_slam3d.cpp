@@ -13,8 +13,8 @@
 #include "lookahead/slam/octree/octree_likelihood.hpp"
 #include "lookahead/slam/octree/ray_insertion.hpp"
 #include "lookahead/slam/parallel/parallel_errors.hpp"
+#include "lookahead/slam/rbpf/particle_filter.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
-#include "lookahead/slam/rbpf/resampler.hpp"
 #include "lookahead/slam/rbpf3d/motion3_model.hpp"
 #include "lookahead/slam/segslam/map_sampler.hpp"
 #include "seg_slam3d_transition.hpp"
@@ -299,6 +299,8 @@ void SegSlam3d::update(std::size_t k) {
   store_transitions(transitions);
   last_update_ = k;
   ++stats_.updates;
+  // SegSLAM eq. (6)-(7): the RBPF's selective resampling (Grisetti et al. 2007, sec. IV step 5).
+  shift_log_weights(particles_);
   bool resampled = false;
   stats_.neff.push_back(resample_if_degenerate(particles_, options_.filter.resample_threshold, rng_, resampled));
   if (resampled) ++stats_.resamplings;
@@ -372,13 +374,7 @@ void SegSlam3d::prune() {
     it = segmap_.contains(it->first) ? std::next(it) : targets_.erase(it);
 }
 
-std::size_t SegSlam3d::best_particle() const {
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < particles_.size(); ++i) {
-    if (particles_[i].log_weight > particles_[best].log_weight) best = i;
-  }
-  return best;
-}
+std::size_t SegSlam3d::best_particle() const { return best_particle_index(particles_); }
 
 std::vector<std::pair<std::size_t, Pose4>> SegSlam3d::trajectory(std::size_t m) const {
   const auto chain = temporal_chain(segmap_, particles_.at(m).submap);
@@ -386,15 +382,9 @@ std::vector<std::pair<std::size_t, Pose4>> SegSlam3d::trajectory(std::size_t m) 
 }
 
 std::vector<Pose4> SegSlam3d::trajectory_at_every_sweep(std::size_t m) const {
-  const auto updates = trajectory(m);
-  std::vector<Pose4> out(sweeps_.size());
-  std::size_t k = 0;
-  for (std::size_t s = 0; s < sweeps_.size(); ++s) {
-    while (k + 1 < updates.size() && updates[k + 1].first <= s) ++k;
-    const auto& [sweep, pose] = updates[k];
-    out[s] = pose.compose(Pose4::level_of(sweeps_[sweep].odometry).between(Pose4::level_of(sweeps_[s].odometry)));
-  }
-  return out;
+  return poses_at_every_scan(trajectory(m), sweeps_.size(), [&](std::size_t from, std::size_t to) {
+    return Pose4::level_of(sweeps_[from].odometry).between(Pose4::level_of(sweeps_[to].odometry));
+  });
 }
 
 SegmentedPath SegSlam3d::segmented_trajectory(std::size_t m) const {
@@ -419,17 +409,8 @@ Pose4 SegSlam3d::global_pose(std::size_t m) const {
 }
 
 Pose4 SegSlam3d::estimate() const {
-  std::vector<double> logw;
-  for (const SegParticle3& p : particles_) logw.push_back(p.log_weight);
-  const std::vector<double> w = normalized_weights(logw);
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();
-  double c = 0, s = 0;
-  for (std::size_t m = 0; m < particles_.size(); ++m) {
-    const Pose4 g = global_pose(m);
-    position += w[m] * g.position();
-    c += w[m] * std::cos(g.yaw), s += w[m] * std::sin(g.yaw);
-  }
-  const Pose4 mean{position.x(), position.y(), position.z(), std::atan2(s, c)};
+  const Pose4 mean =
+      weighted_mean_level_pose(particle_weights(particles_), [&](std::size_t m) { return global_pose(m); });
   return mean.compose(
       Pose4::level_of(sweeps_[last_update_].odometry).between(Pose4::level_of(sweeps_.back().odometry)));
 }

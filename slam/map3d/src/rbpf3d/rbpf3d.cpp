@@ -8,7 +8,7 @@
 
 #include "lookahead/slam/geometry/pose2.hpp"
 #include "lookahead/slam/parallel/parallel_errors.hpp"
-#include "lookahead/slam/rbpf/resampler.hpp"
+#include "lookahead/slam/rbpf/particle_filter.hpp"
 #include "lookahead/slam/rbpf3d/motion3_model.hpp"
 
 namespace lookahead::slam {
@@ -93,21 +93,11 @@ void Rbpf3d::predict_and_weigh(const RangeSweep& sweep) {
   stats_.predict_weight_seconds += seconds_since(start);
 }
 
+// Selective resampling (Grisetti et al. 2007, sec. IV step 5), as SegSLAM sec. 2.2 uses it.
 void Rbpf3d::resample_if_needed() {
-  std::vector<double> log_w;
-  for (const Particle3& p : particles_) log_w.push_back(p.log_weight);
-  const std::vector<double> w = normalized_weights(log_w);
-  const double neff = effective_sample_size(w);
-  stats_.neff.push_back(neff);
-  if (neff >= options_.resample_threshold * static_cast<double>(particles_.size())) return;
-  std::vector<Particle3> next;
-  next.reserve(particles_.size());
-  for (std::size_t i : low_variance_resample(w, rng_)) {
-    next.push_back(particles_[i]);  // O(1): the map is shared until written
-    next.back().log_weight = 0.0;
-  }
-  particles_ = std::move(next);
-  ++stats_.resamplings;
+  bool resampled = false;
+  stats_.neff.push_back(resample_if_degenerate(particles_, options_.resample_threshold, rng_, resampled));
+  if (resampled) ++stats_.resamplings;
 }
 
 void Rbpf3d::insert(const RangeSweep& sweep) {
@@ -133,29 +123,18 @@ void Rbpf3d::insert(const RangeSweep& sweep) {
   stats_.insert_seconds += seconds_since(start);
 }
 
-std::size_t Rbpf3d::best_particle() const {
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < particles_.size(); ++i) {
-    if (particles_[i].log_weight > particles_[best].log_weight) best = i;
-  }
-  return best;
-}
+std::size_t Rbpf3d::best_particle() const { return best_particle_index(particles_); }
 
 Eigen::Vector3d Rbpf3d::mean_position() const {
-  std::vector<double> log_w;
-  for (const Particle3& p : particles_) log_w.push_back(p.log_weight);
-  const std::vector<double> w = normalized_weights(log_w);
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (std::size_t i = 0; i < particles_.size(); ++i) mean += w[i] * particles_[i].pose.translation();
-  return mean;
+  return weighted_mean_position(particle_weights(particles_),
+                                [&](std::size_t i) -> Eigen::Vector3d { return particles_[i].pose.translation(); });
 }
 
 std::vector<Pose3> Rbpf3d::trajectory(std::size_t particle) const {
   std::vector<Pose3> poses;
-  for (const Trajectory3Node* n = particles_.at(particle).trajectory.get(); n; n = n->parent.get()) {
+  for (const Trajectory3Node* n : chain_oldest_first(particles_.at(particle).trajectory.get()))
     poses.push_back(n->pose);
-  }
-  return {poses.rbegin(), poses.rend()};
+  return poses;
 }
 
 }  // namespace lookahead::slam
