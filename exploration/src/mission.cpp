@@ -71,7 +71,7 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       // A spot is the same target within 1 m (the goal shifts as the map grows, as kSameGoalRadius);
       // strikes never make an entry permanent: the map keeps growing around it.
       predicted_targets_({kSameGoalRadius, options.lookahead.repredict_after, std::numeric_limits<int>::max()}),
-      recoveries_(make_recoveries(default_recovery_order())) {
+      recoveries_(make_recoveries(parse_recovery_order(options_.recovery_order))) {
   if (!reachable_.start_valid) check_start(world, world.source(), start, options.robot.radius);
   if (!reachable_.start_valid) {
     throw std::invalid_argument("world " + world.source() + ": the start pose (" + std::to_string(start.x) + ", " +

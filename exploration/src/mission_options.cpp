@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "lookahead/exploration/recovery_behaviour.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
 
 namespace lookahead::exploration {
@@ -93,7 +94,8 @@ void MissionOptions::validate() const {
   const auto require = [](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("mission option out of range: ") + what);
   };
-  make_strategy(strategy);  // throws on an unknown name
+  make_strategy(strategy);               // throws on an unknown name
+  parse_recovery_order(recovery_order);  // throws on an unknown or repeated name
   require(lookahead.latency >= 0, "lookahead.latency >= 0");
   require(lookahead.targets_per_selection >= 1, "lookahead.targets_per_selection >= 1");
   require(lookahead.skip_region_wall_gap >= 0, "lookahead.skip_region_wall_gap >= 0");

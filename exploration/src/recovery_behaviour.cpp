@@ -3,9 +3,43 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <optional>
 #include <stdexcept>
 
+#include "lookahead/slam/config/named_choice.hpp"
+
 namespace lookahead::exploration {
+
+namespace {
+
+std::string trimmed(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+}  // namespace
+
+std::vector<RecoveryKind> parse_recovery_order(const std::string& text) {
+  std::vector<RecoveryKind> order;
+  if (trimmed(text).empty()) return order;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    const std::string name = trimmed(text.substr(start, comma == std::string::npos ? comma : comma - start));
+    const std::optional<RecoveryKind> kind = slam::config::choice_from_name<RecoveryKind>(name);
+    if (!kind) {
+      throw std::invalid_argument("mission.recovery_order: unknown behaviour '" + name + "' in '" + text +
+                                  "' (one of " + slam::config::choice_list<RecoveryKind>() + ")");
+    }
+    if (std::find(order.begin(), order.end(), *kind) != order.end())
+      throw std::invalid_argument("mission.recovery_order: '" + name + "' twice in '" + text + "'");
+    order.push_back(*kind);
+    if (comma == std::string::npos) return order;
+    start = comma + 1;
+  }
+}
 
 std::unique_ptr<RecoveryBehaviour> make_recovery(RecoveryKind kind) {
   switch (kind) {

@@ -4,12 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "lookahead/exploration/mission_options.hpp"
 #include "lookahead/exploration/recovery_behaviour.hpp"
 #include "lookahead/exploration/skip_rule.hpp"
+#include "lookahead/slam/config/named_choice.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -127,6 +130,48 @@ TEST(RecoveryBehaviours, TheOrderIsTheConfiguredOne) {
   std::vector<std::string> names;
   for (const auto& b : defaults) names.emplace_back(b->name());
   EXPECT_EQ(names, (std::vector<std::string>{"backtrack", "last_resort", "second_chance", "look_around"}));
+}
+
+TEST(RecoveryOrder, ParsesNamesAndRejectsUnknownOrRepeatedOnes) {
+  EXPECT_EQ(parse_recovery_order("backtrack, last_resort, second_chance, look_around"), default_recovery_order());
+  EXPECT_EQ(parse_recovery_order(MissionOptions{}.recovery_order), default_recovery_order());
+  EXPECT_EQ(parse_recovery_order(" look_around ,backtrack"),
+            (std::vector<RecoveryKind>{RecoveryKind::kLookAround, RecoveryKind::kBacktrack}));
+  EXPECT_TRUE(parse_recovery_order("  ").empty());
+  try {
+    parse_recovery_order("backtrack, squeze");
+    FAIL() << "an unknown name must throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'squeze'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("recovery_order"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_recovery_order("backtrack, backtrack"), std::invalid_argument);
+  EXPECT_THROW(parse_recovery_order("backtrack,"), std::invalid_argument);  // an empty entry
+  MissionOptions o = MissionOptions::defaults();
+  o.recovery_order = "second_chance, nope";
+  EXPECT_THROW(o.validate(), std::invalid_argument);
+}
+
+// Property: any text either parses into distinct behaviours that print back to the same
+// order, or throws std::invalid_argument; nothing else.
+TEST(RecoveryOrder, AnyTextParsesOrThrowsInvalidArgument) {
+  const std::vector<std::string> pieces = {
+      "backtrack", "last_resort", "second_chance", "look_around", ",", " ", "squeeze", "", "\t", "x", "back"};
+  std::mt19937 rng(7);
+  for (int i = 0; i < 2000; ++i) {
+    std::string text;
+    const int n = static_cast<int>(rng() % 8);
+    for (int k = 0; k < n; ++k) text += pieces[rng() % pieces.size()];
+    try {
+      const std::vector<RecoveryKind> order = parse_recovery_order(text);
+      std::string printed;
+      for (const RecoveryKind kind : order)
+        printed += (printed.empty() ? "" : ",") + std::string(slam::config::choice_name(kind));
+      EXPECT_EQ(parse_recovery_order(printed), order) << text;
+      EXPECT_EQ(make_recoveries(order).size(), order.size());
+    } catch (const std::invalid_argument&) {
+    }
+  }
 }
 
 TEST(SkipRuleBuilder, NamesEveryField) {

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -76,10 +77,14 @@ constexpr std::array<std::pair<RecoveryKind, const char*>, 4> choice_names(Recov
            {RecoveryKind::kLookAround, "look_around"}}};
 }
 
-/// The order the mission tries its recovery behaviours in.
+/// The order the mission tries its recovery behaviours in by default (mission.recovery_order).
 inline std::vector<RecoveryKind> default_recovery_order() {
   return {RecoveryKind::kBacktrack, RecoveryKind::kLastResort, RecoveryKind::kSecondChance, RecoveryKind::kLookAround};
 }
+
+/// mission.recovery_order: comma-separated names (spaces around them ignored), each at most
+/// once; "" is no behaviour. Throws std::invalid_argument naming the bad entry.
+std::vector<RecoveryKind> parse_recovery_order(const std::string& text);
 
 std::unique_ptr<RecoveryBehaviour> make_backtrack_recovery();
 std::unique_ptr<RecoveryBehaviour> make_last_resort_recovery();
