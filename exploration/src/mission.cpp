@@ -43,10 +43,6 @@ constexpr double kRetireRadius = 1.0;
 // robot is driving to (the map grows on the way, so the goal shifts a little).
 constexpr double kSameGoalRadius = 1.0;
 
-// Selections in a row with no reachable frontier (each followed by a backtrack or a look
-// around) before the last resort (mission_escapes.cpp).
-constexpr int kOrdinaryTries = 3;
-
 MissionOptions checked(MissionOptions o) {
   o.validate();
   // The predictive strategy and a filter that uses hypotheses both need predictions made.
@@ -74,7 +70,8 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)),
       // A spot is the same target within 1 m (the goal shifts as the map grows, as kSameGoalRadius);
       // strikes never make an entry permanent: the map keeps growing around it.
-      predicted_targets_({kSameGoalRadius, options.lookahead.repredict_after, std::numeric_limits<int>::max()}) {
+      predicted_targets_({kSameGoalRadius, options.lookahead.repredict_after, std::numeric_limits<int>::max()}),
+      recoveries_(make_recoveries(parse_recovery_order(options_.recovery_order))) {
   if (!reachable_.start_valid) check_start(world, world.source(), start, options.robot.radius);
   if (!reachable_.start_valid) {
     throw std::invalid_argument("world " + world.source() + ": the start pose (" + std::to_string(start.x) + ", " +
@@ -160,9 +157,9 @@ void Mission::deliver_prediction() {
 SkipRule Mission::skip_rule() const {
   SkipRule rule = options_.lookahead.skip_rule();
   rule.free = options_.free_threshold;  // undecided cells, for wall slivers: as the frontier detector reads them
-  // A wall gap closes a region because the robot cannot pass it (the maze: 0.5 m, the Pioneer's
-  // diameter); an opening the robot fits through is a way on. The KTH setup's 0.2 m robot
-  // passes 0.4 m doors, and a 0.5 m gap closed them into wall slivers (README, P-SLAM 3).
+  // A wall gap closes a region because the robot cannot pass it; an opening the robot fits
+  // through is a way on. A gap wider than the robot's diameter would close real doors into
+  // wall slivers, so the configured gap is capped at the diameter.
   rule.wall_gap = std::min(rule.wall_gap, 2 * options_.robot.radius);
   if (options_.lookahead.known_boundary) {
     // The simulator's world is the building: its extent is the boundary the paper's Fig. 7(d)
@@ -200,7 +197,7 @@ void Mission::predict_while_idle() {
 void Mission::refresh() {
   // A robot held by the reactive stop neither moves nor turns, so the map-change rule
   // alone would never bring the costmap up to date with what the laser sees ahead.
-  if (!map_changed_ && stop_streak_ == 0) return;
+  if (!map_changed_ && !stop_.holding()) return;
   last_refresh_pose_ = robot_.pose();
   ++stats_.map_refreshes;
   const slam::OccupancyGrid& m = map();
@@ -248,60 +245,6 @@ bool Mission::goal_still_useful() const {
   return false;
 }
 
-void Mission::decide() {
-  if (turned_ < options_.initial_turn || costmap_.empty()) return;
-  if (!need_new_path()) return;
-  // A blocked path is no reason to change the target: only a target that stopped being
-  // worth it is. Re-choosing on every blocked path swaps between far frontiers.
-  if (path_blocked_ && goal_ && goal_still_useful()) {
-    if (replan_current_goal()) return;
-    // No way to the goal any more. The map often lets it back a moment later, and a new
-    // selection resets the stuck clock, so two such goals can take turns for good
-    // (kth_50055641 nearest swapped between two every 25 s for the last 1000 s of its
-    // mission). A spot whose replan fails a second time within the lifetime is a failed
-    // goal; once is not (blacklisting at the first failure cost kth_0510034869 its 95 %).
-    if (!backtracking_) {
-      if (replan_failures_.contains(goal_->x, goal_->y, time_))
-        blacklist_.add(goal_->x, goal_->y, time_);
-      else
-        replan_failures_.add(goal_->x, goal_->y, time_);
-    }
-  }
-  select_new_target();
-}
-
-bool Mission::need_new_path() {
-  if (!follower_) return true;
-  // A reached goal whose frontier is still there cannot be explored from there (a corner
-  // the sensor cannot see from its goal, the inside of a wall): the frontier cells next to
-  // it are retired, and the spot is not picked again for a while.
-  if (follower_->goal_reached()) {
-    if (squeezing_) last_resorts_ = 0;  // it got through: the next trap gets all its tries
-    if (goal_ && !backtracking_) {
-      blacklist_.add(goal_->x, goal_->y, time_);
-      reached_goal_ = goal_;  // its frontier gets one more map update to clear
-    }
-    return true;
-  }
-  if (time_ < next_goal_check_) return false;
-  next_goal_check_ = time_ + options_.goal_check_period;
-  const slam::Pose2 p = estimate();
-  const double d = std::hypot(goal_->x - p.x, goal_->y - p.y);
-  // On kth_50015848 most goals the stuck clock gave up were being driven to: a path around
-  // a wall led away from the goal for the whole 30 s (stuck_clock.hpp).
-  if (stuck_clock_.stuck(time_, d, follower_->remaining_length(), path_length_)) {
-    spdlog::debug(
-        "t {:.1f}: stuck on ({:.2f}, {:.2f}): {:.2f} m away, {:.2f} m of path left, {:.2f} m driven since "
-        "the last progress{}{}",
-        time_, goal_->x, goal_->y, d, follower_->remaining_length(), stuck_clock_.driven_since_progress(path_length_),
-        squeezing_ ? ", squeezing" : "", backtracking_ ? ", backtracking" : "");
-    blacklist_.add(goal_->x, goal_->y, time_);
-    ++stats_.stuck_goals;
-    return true;
-  }
-  return !goal_still_useful() || goal_predicted();
-}
-
 bool Mission::goal_predicted() const {
   // Look-ahead mapping: a hypothesis delivered on the way (requested for this very target,
   // so it arrives after the choice) may cover the frontier the robot is driving to. The
@@ -346,93 +289,26 @@ void Mission::count(const Selection& s) {
   stats_.planning_time += s.planning_time;
 }
 
-bool Mission::replan_current_goal() {
-  path_blocked_ = false;
-  const Selection s = replan_to_goal(selection_inputs(), *goal_);
-  count(s);
-  spdlog::debug("t {:.1f}: replan to ({:.2f}, {:.2f}): {}", time_, goal_->x, goal_->y,
-                s.outcome == SelectionOutcome::kPlanned ? "planned" : "failed");
-  if (s.outcome != SelectionOutcome::kPlanned) return false;
-  // The stuck clock keeps running: a goal that keeps getting blocked is given up in time.
-  follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
-  return true;
-}
-
-void Mission::select_new_target() {
-  path_blocked_ = false;
-  backtracking_ = false;
-  squeezing_ = false;
-  visiting_predicted_ = false;
-  follower_.reset();
-  goal_.reset();
-  blacklist_.expire(time_);
-  // Half through a door the margin closes, the ordinary costmap has no room where the robot
-  // stands: the next target is chosen as the squeeze chose its own. Out of the door, the
-  // margin has room again.
-  if (tight_) {
-    const slam::Pose2 p = estimate();
-    tight_ = !costmap_.is_free(p.x, p.y);
-    if (tight_ && squeeze()) return;
-  }
-  const Selection s = select_target(selection_inputs());
-  spdlog::debug("t {:.1f}: selection {}: clusters {}, candidates {}, plans {} ({} failed), goal ({:.2f}, {:.2f})",
-                time_, static_cast<int>(s.outcome), s.clusters, s.candidates, s.plans, s.plan_failures, s.goal_x,
-                s.goal_y);
-  ++stats_.selections;
-  count(s);
-  if (s.outcome == SelectionOutcome::kNoFrontier) {
-    status_ = MissionStatus::kDone;
-  } else if (s.outcome != SelectionOutcome::kPlanned) {
-    // Maybe only for now: retrace the trail out of here, or turn once more to look around,
-    // and give up after three tries (a backtrack that does not lead to a target counts as
-    // one). Frontiers that are only blacklisted for a while are no trap: the robot looks
-    // around until an entry expires (each spot is retried at most max_strikes times).
-    if (s.waiting_on_blacklist) {
-      turned_ = 0.0;
-      return;
-    }
-    const bool unreachable = s.outcome == SelectionOutcome::kUnreachable;
-    if (++unreachable_streak_ >= kOrdinaryTries) {
-      if (unreachable && last_resort()) return;
-      if (second_chance()) return;
-      status_ = MissionStatus::kTrapped;
-      return;
-    }
-    if (unreachable && backtrack()) return;
-    turned_ = 0.0;
-  } else {
-    unreachable_streak_ = 0;
-    last_resorts_ = 0;
-    visiting_predicted_ = s.rest_predicted;
-    if (s.rest_predicted && stats_.rest_predicted_time < 0) stats_.rest_predicted_time = time_;
-    // P-SLAM predicts the region around the next exploration goal (sec. II-A, step 1).
-    if (lookahead_) lookahead_->request(map(), prediction_targets(s.goal_x, s.goal_y), time_);
-    follow(s, options_.follower);
-  }
-}
-
-void Mission::follow(const Selection& s, const planner::FollowerOptions& tracking) {
-  goal_ = planner::Point2{s.goal_x, s.goal_y};
-  follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
-  const slam::Pose2 p = estimate();
-  stuck_clock_.start(time_, std::hypot(s.goal_x - p.x, s.goal_y - p.y), planner::path_length(s.path), path_length_);
-  next_goal_check_ = time_ + options_.goal_check_period;
-}
-
 void Mission::act() {
   if (status_ != MissionStatus::kRunning) return;
   planner::VelocityCommand cmd;
-  if (!follower_) stop_streak_ = 0;
+  if (!follower_) stop_.clear();
   if (turned_ < options_.initial_turn) {
     cmd.omega = options_.robot.max_turn_rate;  // look around before choosing a target
   } else if (follower_) {
     cmd = follower_->command(estimate());
-    if (cmd.v > 0 && path_ahead_blocked(cmd)) {
+    const StopGeometry stop{options_.robot.radius, options_.stop_distance, options_.laser.period(), tight_};
+    if (cmd.v > 0 && ReactiveStop::blocks(last_scan_, cmd, stop)) {
       cmd.v = 0.0;  // turn on the spot only; the costmap catches up at the next refresh
       ++stats_.safety_stops;
-      hold_or_replan();
+      // A stop that lasts gives the path up: the navigation replans (Follow -> Replan).
+      if (stop_.hold(backtracking_ || squeezing_)) {
+        follower_.reset();
+        path_blocked_ = true;
+        ++stats_.replans;
+      }
     } else {
-      stop_streak_ = 0;
+      stop_.clear();
     }
   }
   const slam::Pose2 before = robot_.pose();

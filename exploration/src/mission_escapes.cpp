@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The ways out when the costmap (body + safety margin) has no way on: a backtrack along the
-// robot's own trail; a squeeze through a door the margin closes (planned on the map inflated
-// by the body alone) when the margin closes the way to the current goal, and as the last
-// resort before the mission is called trapped; and, before that call, a second chance for
-// the goals blacklisted for good.
+// The moves of the recovery behaviours (recovery_behaviour.hpp) when the costmap (body +
+// safety margin) has no way on: a backtrack along the robot's own trail; a squeeze through
+// a door the margin closes (planned on the map inflated by the body alone); and the second
+// chance for the goals blacklisted for good.
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -13,10 +12,6 @@
 
 namespace lookahead::exploration {
 namespace {
-
-// Last-resort moves (squeeze, backtrack, alternating) before the mission ends trapped. A
-// squeeze that reaches its goal starts the count again.
-constexpr int kLastResortTries = 6;
 
 // Tracking of a backtrack along the trail: look-ahead [m] and heading error that stops
 // forward motion [rad].
@@ -36,40 +31,13 @@ bool Mission::backtrack() {
   return true;
 }
 
-bool Mission::last_resort() {
-  // The ordinary tries found no frontier the margin lets the robot reach. Before calling it
-  // trapped: a door wider than the body but narrower than body + margin is no wall. A
-  // squeeze the stuck clock gives up (a jamb it cannot pass) is followed by a backtrack,
-  // so the next squeeze starts elsewhere and aims at another frontier (the failed goal is
-  // blacklisted). Only here, so a mission that never runs out of tries is unchanged.
-  if (last_resorts_ >= kLastResortTries) return false;
-  ++last_resorts_;
-  const bool squeeze_first = last_resorts_ % 2 == 1;
-  return squeeze_first ? (squeeze() || backtrack()) : (backtrack() || squeeze());
-}
-
-bool Mission::second_chance() {
-  // The third time the stuck clock gives a goal up, it is blacklisted for good. The clock
-  // measures progress as the straight line to the goal shrinking, and a long way round
-  // (a ring corridor, a hall entered from its far side) can lead away from the goal for
-  // more than stuck_time: on kth_50010540 (seed 3, utility) the last two frontiers were
-  // given up three times each while the robot was driving to them, and the mission ended
-  // trapped at 33 % coverage. Before calling a mission trapped, the goals blacklisted for
-  // good (by the stuck clock, or reached with their frontier left) get their strikes back
-  // once, and from then on a shorter path left counts as progress too. Only
-  // here, so a mission that is never trapped is unchanged (progress along the path from
-  // the start makes nearest worse on kth_50015848: 79 % against 91.5 % at the 4 h guard).
-  if (second_chance_used_) return false;
-  second_chance_used_ = true;
+std::size_t Mission::forgive_blacklist() {
   const std::size_t forgiven = blacklist_.forgive_permanent();
-  if (forgiven == 0) return false;
+  if (forgiven == 0) return 0;
   stats_.forgiven_goals += static_cast<int>(forgiven);
   stuck_clock_.count_path_always();
-  unreachable_streak_ = 0;
-  last_resorts_ = 0;
   spdlog::debug("t {:.1f}: trapped by the blacklist: {} goal(s) get a second chance", time_, forgiven);
-  turned_ = 0.0;  // look around, then choose among the forgiven goals
-  return true;
+  return forgiven;
 }
 
 planner::Costmap Mission::body_costmap() const {

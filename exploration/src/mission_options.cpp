@@ -3,20 +3,19 @@
 
 #include <stdexcept>
 
+#include "lookahead/exploration/recovery_behaviour.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
 
 namespace lookahead::exploration {
 namespace {
 
-// Look-ahead mapping as measured on the paper's symmetric maze (README, P-SLAM, "1. Symmetric
-// maze: the mission defaults meet the bar"): full coverage over 20 seeds -37.9 % time against
-// nearest-frontier with 96 % of the predicted cells right, where the issue's d = 10 m region
-// rule alone gave -3.8 %. Each piece is a measured step of that section:
-// - surroundings of 14 m first, walls on at most 5 % explored free cells, the issue's 10 m
-//   when they give no hypothesis (on the KTH plans 14 m alone matched almost nowhere);
+// The mission's look-ahead mapping (docs/algorithms/exploration.md has the evidence):
+// - surroundings of 14 m first, walls on at most 5 % of the explored free cells, the
+//   predictor's 10 m surroundings when they give no hypothesis (a large window alone matches
+//   rarely in buildings with few repeats);
 // - control points up to 5 m, the radius of S_f (the paper's "preset range" has no value);
-// - a frontier is left out when its region within 7 m (d/2 of the large surroundings),
-//   closed by walls, wall gaps up to 0.5 m and at most the robot's diameter (no way through;
+// - a frontier is left out when its region within 7 m (half the large surroundings), closed
+//   by walls, wall gaps up to 0.5 m and at most the robot's diameter (no way through;
 //   Mission::skip_rule) and the world's extent (Fig. 7(d) assumes the boundary known), is
 //   predicted or a closed pocket of at most 1 m^2 (a wall sliver);
 // - an idle predictor predicts the nearest frontiers not covered yet.
@@ -51,27 +50,22 @@ MissionOptions MissionOptions::defaults() {
   // Two net hits block a cell for the planner, not one. A hit adds 0.85 to the log-odds and
   // a miss takes 0.4 off, so at 0.65 (log-odds 0.62) one noisy return blocks a cell and the
   // next beam through frees it: the cells beside a door's jambs, which get both, opened and
-  // closed the door under the margin at every scan, and each replan took a new way round
-  // (kth_50010536_PLAN3 utility sat at 86 % for 3000 s; README, door flicker). A wall is hit
-  // scan after scan and passes 0.8 (log-odds 1.39) in 0.2 s.
+  // closed the door under the margin at every scan, and each replan took a new way round,
+  // so a robot could circle a door for the rest of its mission. A wall is hit scan after
+  // scan and passes 0.8 (log-odds 1.39) in 0.2 s.
   o.planner.costmap.occupied_threshold = 0.8;
   o.follower.lookahead = 0.35;  // short: cut corners less in doorways
   // The 1 deg beams of the 8 m laser end 0.14 m (2.8 cells) apart: at the far end of a
   // corridor longer than the range the frontier is a row of specks 2-3 cells apart, and
-  // with a gap of 1 none of them makes a cluster (the mission ended "done" at 15 % of the
-  // generated corridor).
+  // with a gap of 1 none of them makes a cluster, so the corridor would look explored.
   o.frontiers.cluster_gap = 3;
-  // The paper's conservative Psi threshold (sec. III-C): on the maze 0.6 left a quarter of
-  // the look-ahead map wrong, 0.7 about a tenth (README, P-SLAM).
+  // The paper's conservative Psi threshold (sec. III-C): a lower one lets hypotheses with
+  // many wrong cells into the look-ahead map.
   o.lookahead.predictor.similarity_threshold = 0.7;
   // Skip a frontier only when its whole unexplored region (closed by explored or predicted
-  // walls) is predicted, not when the first unknown cells beyond it are (skip_share 1, the
-  // rule before). At 97a77a4, kth_0510034869 predictive seed 3: a correct hypothesis covered
-  // the first cells beyond the mouth of the west wing, the share rule skipped that frontier,
-  // and the mission ended "done" at 1733 s with 74 % explored, the wing neither explored nor
-  // predicted. With the empty-region fix (PredictedMap::covered_share) all KTH predictive
-  // missions reach their goal (README, P-SLAM, reproductions 1 and 3). The region's radius
-  // and the rest of the rule: look_ahead_as_on_the_maze.
+  // walls) is predicted, not when the first unknown cells beyond it are: a hypothesis that
+  // covers only the mouth of a wing would have the wing skipped, neither explored nor
+  // predicted. The region's radius and the rest of the rule: look_ahead_as_on_the_maze.
   look_ahead_as_on_the_maze(o.lookahead);
   o.harmonize();
   return o;
@@ -100,7 +94,8 @@ void MissionOptions::validate() const {
   const auto require = [](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("mission option out of range: ") + what);
   };
-  make_strategy(strategy);  // throws on an unknown name
+  make_strategy(strategy);               // throws on an unknown name
+  parse_recovery_order(recovery_order);  // throws on an unknown or repeated name
   require(lookahead.latency >= 0, "lookahead.latency >= 0");
   require(lookahead.targets_per_selection >= 1, "lookahead.targets_per_selection >= 1");
   require(lookahead.skip_region_wall_gap >= 0, "lookahead.skip_region_wall_gap >= 0");

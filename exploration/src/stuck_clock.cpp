@@ -11,10 +11,10 @@ namespace {
 constexpr double kProgressStep = 0.2;
 
 // A detour: more path left than this [m] and than this many times the straight distance to
-// the goal. In the doors the margin flickers on (kth_50015848's east wing) the replanned
-// paths stay 1-5 m long, and counting their random shortening as progress kept nearest there
-// (79 % at the 4 h guard against 91.5 %); its ring corridor to the halls left 40 m of path
-// to a goal 13.8 m away.
+// the goal. In doors the margin flickers on, the replanned paths stay 1-5 m long, and their
+// random shortening is no progress: counting it would keep the robot at such a door. A ring
+// corridor to a hall, by contrast, leaves tens of metres of path to a goal a third as far
+// away in a straight line.
 constexpr double kDetourPath = 10.0;
 constexpr double kDetourRatio = 2.0;
 

@@ -112,7 +112,8 @@ Prediction predict_structure(const slam::OccupancyGrid& map, const ExploredMapMo
     large.max_conflict_share = o.large_max_conflict_share;
     p = predict_at_scale(map, model, tx, ty, large);
   }
-  // Without a control point the d has none either (the same range, the same corners).
+  // Without a control point the surroundings of diameter d have none either (the same range,
+  // the same corners).
   if (o.large_surroundings_diameter <= 0 || p.status == Prediction::Status::kNoMatch) {
     p = predict_at_scale(map, model, tx, ty, o);
   }

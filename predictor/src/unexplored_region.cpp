@@ -8,13 +8,6 @@
 
 namespace lookahead::predictor {
 
-// Tried on 2026-11-22 and reverted: seeding only from unknown cells that f reaches without
-// crossing a wall, and closing unknown passages narrower than 0.3 m. Aimed at office
-// hypotheses that reached out of the building; those came through outer-wall stretches
-// that were never seen (0.45 m and more), which neither rule closes, and the office
-// figures did not move, while the maze lost half its time saving (-8.4 % against -14.1 %
-// to the 95 % goal, 5 seeds): there the seeds behind a pillar's wall near f predict the
-// next corridor, rightly (97 % of predicted cells right either way). README, P-SLAM 2.
 std::vector<slam::CellIndex> unexplored_region(const slam::OccupancyGrid& map, double tx, double ty, double diameter) {
   const slam::CellIndex t = map.cell_at(tx, ty);
   const int r = static_cast<int>(std::ceil(diameter / 2 / map.resolution()));

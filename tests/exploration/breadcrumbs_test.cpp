@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The way back out of a place whose door the safety margin closed behind the robot
-// (kth_0510034869, root cause 4 in the README): the trail as a stack, and the escape plan on
-// a hand-made grid of two rooms joined by a 0.3 m door.
+// The way back out of a place whose door the safety margin closed behind the robot: the
+// trail as a stack, and the escape plan on a hand-made grid of two rooms joined by a 0.3 m door.
 #include "lookahead/exploration/breadcrumbs.hpp"
 
 #include <gtest/gtest.h>
@@ -43,9 +42,9 @@ TEST(Breadcrumbs, BacktrackRetracesNewestFirstAndPopsWhatItRetraced) {
   EXPECT_EQ(c.size(), 3U);  // nothing popped when no crumb qualifies
 }
 
-// A trail that comes back past its own start (kth_50010540 nearest: the robot stood in a door
-// it had driven through 138 m of trail earlier; retracing all of it took it away from the
-// door, and the next selection back into it, for 600 s).
+// A trail that comes back past its own start (a robot standing in a door it drove through
+// long ago): retracing all of it would take the robot away from the door and the next
+// selection back into it, again and again; where its passes meet it takes the short way.
 TEST(Breadcrumbs, BacktrackTakesTheShortestWayAlongTheTrailWhereItsPassesMeet) {
   Breadcrumbs c(0.1);
   const auto leg = [&](planner::Point2 a, planner::Point2 b) {

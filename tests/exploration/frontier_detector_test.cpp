@@ -51,7 +51,7 @@ TEST(FrontierDetector, FreeCellsNextToUnknownAreFrontiers) {
   EXPECT_FALSE(d.is_frontier(g, {-1, 5}));   // wall
 }
 
-// Regression (kth_50025630, trapped at 90.7 %): the edge of the seen region is often a band
+// The edge of the seen region is often a band
 // of cells one grazing beam crossed, known but neither free nor occupied. The frontier is
 // the free side of that band, not hidden behind it.
 TEST(FrontierDetector, CellsOneBeamCrossedDoNotHideTheFrontier) {

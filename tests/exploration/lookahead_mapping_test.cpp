@@ -73,8 +73,7 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   }
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
-  const SkipRule rule{0.6, SkipVariant::kRegion, 0.5,   0.1, 0.65,
-                      0.0, std::nullopt,         false, 0.35};  // region: 0.5 m round the goal
+  const SkipRule rule = SkipRule::region(0.5).with_region_tolerance(0.1);  // region: 0.5 m round the goal
   PredictedMap none;
   EXPECT_NEAR(none.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.39, 0.03);  // the half disc
   EXPECT_DOUBLE_EQ(none.covered_share(map, cluster, rule), 0.0);
@@ -85,17 +84,16 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   PredictedMap free_region;
   free_region.add(hypothesis(0.05, 1.0, 0.7, -1000));
   EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster, rule), 1.0);
-  EXPECT_DOUBLE_EQ(free_region.covered_share(
-                       map, cluster, {0.8, SkipVariant::kRegion, 0.5, 0.1, 0.65, 0.0, std::nullopt, false, 0.35}),
+  EXPECT_DOUBLE_EQ(free_region.covered_share(map, cluster,
+                                             SkipRule::region(0.5).with_min_confidence(0.8).with_region_tolerance(0.1)),
                    0.0);  // Psi too low
   PredictedMap wall;
   wall.add(hypothesis(0.05, 0.1, 0.7, 2000));  // a wall right beyond the frontier closes it
   EXPECT_LT(wall.unpredicted_area(map, cluster, 0.5, 0.6, 0.65), 0.01);
   EXPECT_DOUBLE_EQ(wall.covered_share(map, cluster, rule), 1.0);
   // The far-side variant reads only the cells beside the frontier, all predicted here.
-  EXPECT_DOUBLE_EQ(
-      part.covered_share(map, cluster, {0.6, SkipVariant::kFarSide, 7.0, 0.1, 0.65, 0.0, std::nullopt, false, 0.35}),
-      part.predicted_share(map, cluster, 0.6));
+  EXPECT_DOUBLE_EQ(part.covered_share(map, cluster, SkipRule::far_side().with_region_tolerance(0.1)),
+                   part.predicted_share(map, cluster, 0.6));
   const RegionArea a = part.region_area(map, cluster, rule);
   EXPECT_NEAR(a.predicted + a.unpredicted, 0.39, 0.03);  // the half disc, split
   EXPECT_GT(a.predicted, 0.05);
@@ -103,7 +101,7 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
 
 // A frontier whose far side has been seen since the frontiers were found has an empty
 // region: nothing in it is predicted, so no prediction leaves it out (counting it covered
-// skipped every frontier of a KTH plan at 10.8 s and ended the mission at 7 % explored).
+// would skip every stale frontier and end a mission with most of the building unexplored).
 TEST(PredictedMap, AnEmptyRegionIsNotCoveredByPrediction) {
   slam::OccupancyGrid map;
   FrontierCluster cluster;
@@ -113,7 +111,7 @@ TEST(PredictedMap, AnEmptyRegionIsNotCoveredByPrediction) {
   for (int y = 0; y < 20; ++y) cluster.cells.push_back({0, y});  // a stale frontier
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
-  const SkipRule rule{0.6, SkipVariant::kRegion, 0.5, 0.1, 0.65, 0.0, std::nullopt, false, 0.35};
+  const SkipRule rule = SkipRule::region(0.5).with_region_tolerance(0.1);
   PredictedMap none;
   const RegionArea a = none.region_area(map, cluster, rule);
   EXPECT_DOUBLE_EQ(a.predicted + a.unpredicted, 0.0);
@@ -138,7 +136,7 @@ TEST(PredictedMap, AGapInAWallClosesTheRegionWithWallGap) {
   for (int y = -30; y <= 50; ++y)
     if (y < 9 || y > 11) map.add_log_odds({5, y}, 2000);
   const PredictedMap none;
-  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.0, std::nullopt, false, 0.35};
+  SkipRule rule = SkipRule::region(1.0).with_region_tolerance(0.1);
   EXPECT_GT(none.region_area(map, cluster, rule).unpredicted, 1.0);  // the far side of the wall too
   rule.wall_gap = 0.3;
   EXPECT_LT(none.region_area(map, cluster, rule).unpredicted, 0.5);  // only the strip before it
@@ -159,7 +157,7 @@ TEST(PredictedMap, AKnownBoundaryEndsTheRegion) {
   cluster.goal_y = 0.5;
   PredictedMap pm;
   pm.add(hypothesis(0.05, 0.5, 0.7, -1000));  // the building's inside, up to x = 0.5, predicted
-  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.0, std::nullopt, false, 0.35};
+  SkipRule rule = SkipRule::region(1.0).with_region_tolerance(0.1);
   const RegionArea open = pm.region_area(map, cluster, rule);
   EXPECT_GT(open.unpredicted, 0.5);  // beyond x = 0.5: never predictable
   EXPECT_DOUBLE_EQ(pm.covered_share(map, cluster, rule), 0.0);
@@ -188,7 +186,7 @@ TEST(PredictedMap, AWallSliverIsLeftOutOnlyWhenAsked) {
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
   const PredictedMap none;
-  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.3, std::nullopt, false, 0.35};
+  SkipRule rule = SkipRule::region(1.0).with_region_tolerance(0.1).with_wall_gap(0.3);
   RegionArea a = none.region_area(map, cluster, rule);
   EXPECT_TRUE(a.wall_sliver(rule.region_tolerance));
   EXPECT_FALSE(left_out(a, rule));  // not without the option
@@ -227,7 +225,7 @@ TEST(PredictedMap, APredictedWallMakesNoSliver) {
   cluster.goal_y = 0.5;
   PredictedMap pm;
   pm.add(wall);
-  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.3, std::nullopt, true, 0.35};
+  SkipRule rule = SkipRule::region(1.0).with_region_tolerance(0.1).with_wall_gap(0.3).with_wall_slivers(true);
   const RegionArea a = pm.region_area(map, cluster, rule);
   EXPECT_DOUBLE_EQ(a.unpredicted, 0.0);
   EXPECT_TRUE(a.gap_of_prediction);
@@ -253,7 +251,7 @@ TEST(PredictedMap, AnUndecidedBandBeforeAWallIsASliver) {
   cluster.has_goal = true;
   cluster.goal_y = 0.5;
   const PredictedMap none;
-  SkipRule rule{0.6, SkipVariant::kRegion, 1.0, 0.1, 0.65, 0.0, std::nullopt, false, 0.35};
+  SkipRule rule = SkipRule::region(1.0).with_region_tolerance(0.1);
   const RegionArea before = none.region_area(map, cluster, rule);
   EXPECT_DOUBLE_EQ(before.unpredicted, 0.0);
   EXPECT_FALSE(before.closed_by_gap);

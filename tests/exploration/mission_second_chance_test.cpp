@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Regression on a real KTH plan: goals the stuck clock gave up during long detours were
-// blacklisted for good, and the mission ended trapped at 33 % coverage. Before calling a
-// mission trapped, such goals get a second chance with progress measured along the path.
+// On a real KTH plan with long detours, goals the stuck clock gives up while the robot drives
+// to them are blacklisted for good. Before calling a mission trapped, such goals get a second
+// chance with progress measured along the path.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -14,7 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// kth_50010540, seed 3, utility: the setup of config/study/kth_p2_more.yaml (P2 Explore's
+// Plan 50010540, seed 3, utility: the setup of config/study/kth_p2_more.yaml (P2 Explore's
 // 360 deg, 12 m laser; a 0.1 m robot; the map built at the true pose).
 MissionOptions kth_p2_more(std::uint64_t seed) {
   MissionOptions o = MissionOptions::defaults();
@@ -29,8 +29,8 @@ MissionOptions kth_p2_more(std::uint64_t seed) {
   o.laser.max_range = 12;
   o.laser.angular_resolution = 0.008726646;
   o.frontiers.cluster_gap = 2;
-  // The costmap threshold and stuck clock of the time this run ended trapped: with today's
-  // (0.8, progress on detours) it reaches 95 % without needing the second chance.
+  // A one-hit costmap threshold and a stuck clock without detour progress: the setup that
+  // needs the second chance (the defaults, 0.8 and progress on detours, reach 95 % without).
   o.planner.costmap.occupied_threshold = 0.65;
   o.detour_progress = false;
   o.harmonize();
@@ -50,7 +50,7 @@ TEST(MissionSecondChance, GoalsGivenUpDuringDetoursAreRetriedBeforeTrapped) {
   Mission m(w.world, w.start, o);
   const MissionStatus s = m.run();
   EXPECT_EQ(s, MissionStatus::kCoverageReached) << to_string(s) << " at " << m.coverage();
-  EXPECT_GE(m.statistics().forgiven_goals, 1);  // without the second chance: trapped at 33 %
+  EXPECT_GE(m.statistics().forgiven_goals, 1);  // the second chance was needed
   EXPECT_EQ(m.statistics().collisions, 0);
 }
 

@@ -123,8 +123,8 @@ TEST(PredictionTargets, AMissionPredictingWhileIdleMakesMoreRequests) {
 
 // A wall gap closes a region only where the robot cannot pass: the mission's rule takes the
 // options' 0.5 m for the Pioneer (0.5 m across) and the robot's diameter for a smaller robot
-// (the KTH setup's 0.2 m robot passes 0.4 m doors; closed as gaps, they made the region of
-// the first frontier a wall sliver and kth_0510035738 ended at 12 % explored).
+// (a 0.2 m robot passes 0.4 m doors; closed as gaps, they would make rooms behind doors wall
+// slivers, skipped unexplored).
 TEST(PredictionTargets, WallGapsAreNoWiderThanTheRobot) {
   const GeneratedWorld maze = make_pslam_maze({});
   MissionOptions o = MissionOptions::defaults();

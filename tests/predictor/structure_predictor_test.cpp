@@ -101,7 +101,7 @@ TEST(StructurePredictor, LargeSurroundingsFirstAndTheIssuesDiameterWhenTheyMatch
   EXPECT_GT(large.predicted_area, small.predicted_area + 5.0);
   EXPECT_GT(cell_accuracy(*large.hypothesis), 0.9);
   // An 18 m maze explored to x = 10 m: the 14 m surroundings of (10, 6.8) match no other
-  // corner's above the threshold (found by trying maze sizes), the issue's 10 m do.
+  // corner's above the threshold (found by trying maze sizes), the 10 m surroundings do.
   const slam::OccupancyGrid small_maze = test::maze_grid(10.0, 18.0);
   PredictorOptions large_only;
   large_only.surroundings_diameter = 14.0;
@@ -110,9 +110,9 @@ TEST(StructurePredictor, LargeSurroundingsFirstAndTheIssuesDiameterWhenTheyMatch
   const Prediction fallback = predict_structure(small_maze, 10.0, kPeriod + 1.1, o);
   ASSERT_EQ(fallback.status, Prediction::Status::kPredicted);
   EXPECT_DOUBLE_EQ(fallback.diameter, 10.0);
-  PredictorOptions issue = o;
-  issue.large_surroundings_diameter = 0.0;
-  const Prediction alone = predict_structure(small_maze, 10.0, kPeriod + 1.1, issue);
+  PredictorOptions small_only = o;
+  small_only.large_surroundings_diameter = 0.0;
+  const Prediction alone = predict_structure(small_maze, 10.0, kPeriod + 1.1, small_only);
   EXPECT_DOUBLE_EQ(fallback.predicted_area, alone.predicted_area);
   EXPECT_DOUBLE_EQ(fallback.alignment->score.psi, alone.alignment->score.psi);
   o.large_surroundings_diameter = -1.0;

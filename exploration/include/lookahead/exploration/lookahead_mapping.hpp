@@ -52,15 +52,15 @@ struct LookaheadOptions {
   bool skip_wall_slivers = false;
   /// The rule of the options above.
   [[nodiscard]] SkipRule skip_rule() const {
-    return {skip_confidence,
-            skip,
-            skip_region_radius,
-            predictor.min_predicted_area,
-            predictor.features.occupied_threshold,
-            skip_region_wall_gap,
-            std::nullopt,
-            skip_wall_slivers,
-            SkipRule{}.free};  // Mission::skip_rule() sets the mission's free threshold
+    // The mission's free threshold and boundary are set by Mission::skip_rule().
+    return SkipRule{}
+        .with_variant(skip)
+        .with_min_confidence(skip_confidence)
+        .with_region_radius(skip_region_radius)
+        .with_region_tolerance(predictor.min_predicted_area)
+        .with_occupied(predictor.features.occupied_threshold)
+        .with_wall_gap(skip_region_wall_gap)
+        .with_wall_slivers(skip_wall_slivers);
   }
   /// Frontiers predicted per target selection: the chosen target first, then the nearest
   /// other frontier goals (the paper's extension "predict several possible targets",

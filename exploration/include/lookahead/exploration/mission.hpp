@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // An exploration mission: a simulated robot explores a world until it is mapped. Each step
 // is one laser period: sense (scan and odometry into the RBPF, or into a map at the true
-// pose), refresh (costmap, frontiers, path validity), decide (a new target when needed),
-// act (pure pursuit -> unicycle, collisions checked against the true world), record.
+// pose), refresh (costmap, frontiers, path validity), decide (the navigation state machine,
+// navigation_state_machine.hpp), act (pure pursuit -> unicycle, collisions checked against
+// the true world), record.
 #pragma once
 
 #include <algorithm>
@@ -18,7 +19,10 @@
 #include "lookahead/exploration/lookahead_mapping.hpp"
 #include "lookahead/exploration/mission_metrics.hpp"
 #include "lookahead/exploration/mission_options.hpp"
+#include "lookahead/exploration/navigation_state_machine.hpp"
 #include "lookahead/exploration/prediction_targets.hpp"
+#include "lookahead/exploration/reactive_stop.hpp"
+#include "lookahead/exploration/recovery_behaviour.hpp"
 #include "lookahead/exploration/stuck_clock.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
@@ -83,6 +87,8 @@ class Mission {
   [[nodiscard]] const std::optional<planner::Point2>& goal() const { return goal_; }
   [[nodiscard]] const planner::Path* current_path() const { return follower_ ? &follower_->path() : nullptr; }
   [[nodiscard]] const MissionStatistics& statistics() const { return stats_; }
+  /// Where the navigation state machine stands (navigation_state_machine.hpp).
+  [[nodiscard]] NavState navigation_state() const { return nav_state_; }
   [[nodiscard]] const ReachableArea& reachable() const { return reachable_; }
   [[nodiscard]] const CoverageMeter& coverage_meter() const { return meter_; }
   [[nodiscard]] const World& world() const { return world_; }
@@ -101,26 +107,31 @@ class Mission {
   std::vector<std::pair<double, double>> prediction_targets(double goal_x, double goal_y);
   void predict_while_idle();  ///< LookaheadOptions::predict_while_idle
   void refresh();
-  void decide();
-  bool need_new_path();
+  void decide();  ///< runs the navigation state machine (mission_navigation.cpp)
+  NavEvent step_state();
+  NavEvent look_around_step();
+  NavEvent select_step();
+  NavEvent follow_step();
+  NavEvent replan_step();
+  NavEvent recover_step();
+  void goal_reached();  ///< a reached goal's bookkeeping
   bool replan_current_goal();
-  void select_new_target();
   SelectionInputs selection_inputs();
   void count(const Selection& s);
   void act();
   void record();
   void check_end();
   bool goal_still_useful() const;
-  bool goal_predicted() const;            ///< look-ahead mapping covers the current target
-  bool backtrack();                       ///< follows the trail out of a place with no reachable frontier
-  bool squeeze();                         ///< plans to a frontier on the map inflated by the body alone
-  bool last_resort();                     ///< squeeze or backtrack, alternating, before the mission is trapped
-  bool second_chance();                   ///< once: goals blacklisted for good are retried, progress along the path
-  planner::Costmap body_costmap() const;  ///< the map inflated by the body, no safety margin
-  planner::FollowerOptions close_tracking() const;                            ///< for paths that fit only where drawn
+  bool goal_predicted() const;  ///< look-ahead mapping covers the current target
+  // The moves of the recovery behaviours (RecoveryActions, mission_escapes.cpp).
+  class Actions;
+  bool backtrack();                                 ///< follows the trail out of a place with no reachable frontier
+  bool squeeze();                                   ///< plans to a frontier on the map inflated by the body alone
+  std::size_t forgive_blacklist();                  ///< goals blacklisted for good are retried, progress along the path
+  planner::Costmap body_costmap() const;            ///< the map inflated by the body, no safety margin
+  planner::FollowerOptions close_tracking() const;  ///< for paths that fit only where drawn
   void follow(const Selection& s, const planner::FollowerOptions& tracking);  ///< a new goal and path
-  bool path_ahead_blocked(const planner::VelocityCommand& cmd) const;
-  void hold_or_replan();  ///< counts a reactive stop; gives the path up when it lasts
+  void escaped();  ///< out of a trap: the recovery behaviours' counts start again
 
   const World& world_;
   MissionOptions options_;
@@ -157,13 +168,14 @@ class Mission {
   MissionStatistics stats_;
   double time_ = 0.0, path_length_ = 0.0, turned_ = 0.0;
   double next_goal_check_ = 0.0, next_metrics_ = 0.0;
-  int unreachable_streak_ = 0;
-  int last_resorts_ = 0;  ///< squeezes and backtracks since the ordinary tries ran out
-  bool second_chance_used_ = false;
+  NavState nav_state_ = NavState::kLookAround;
+  std::vector<std::unique_ptr<RecoveryBehaviour>> recoveries_;  ///< in the order they are tried
+  int unreachable_streak_ = 0;                                  ///< failed selections in a row
+  bool last_unreachable_ = false;  ///< the last failed selection found no path to a frontier goal
+  ReactiveStop stop_;
   bool map_changed_ = false;
   bool visiting_predicted_ = false;  ///< the goal was chosen with every frontier predicted
   bool path_blocked_ = false;        ///< the follower was dropped because new walls block its path
-  int stop_streak_ = 0;              ///< consecutive steps the reactive stop has held the robot
   std::size_t last_resamplings_ = 0, last_best_ = 0;
   slam::Pose2 last_refresh_pose_;
   /// Where scans went into the map since the last refresh: the bounding box of their poses.

@@ -56,6 +56,10 @@ struct MissionOptions {
   /// corridor within this distance ahead of its body [m] (walls the map has not caught up
   /// with yet).
   double stop_distance = 0.15;
+  /// The recovery behaviours tried, in this order, when a selection plans no path to any
+  /// frontier (recovery_behaviour.hpp): comma-separated names of backtrack | last_resort |
+  /// second_chance | look_around, each at most once; empty: trapped at the first such selection.
+  std::string recovery_order = "backtrack, last_resort, second_chance, look_around";
 
   slam::RbpfOptions slam;
   planner::PlannerOptions planner;

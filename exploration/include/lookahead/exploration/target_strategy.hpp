@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Which frontier to explore next: one interface, several strategies. The P-SLAM issue adds
-// a prediction-aware strategy behind the same interface (predicted cells count as known in
+// Which frontier to explore next: one interface, several strategies. P-SLAM's look-ahead
+// mapping adds a prediction-aware strategy behind the same interface (predicted cells count as known in
 // the information gain, confidently predicted frontiers may be skipped).
 #pragma once
 

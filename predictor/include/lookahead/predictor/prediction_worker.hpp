@@ -22,7 +22,8 @@ class PredictionWorker {
  public:
   /// kBackground lowers the worker thread to the lowest CPU priority (nice 19, Linux): the
   /// filter's threads then take the cores first and the prediction uses what they leave,
-  /// so it cannot slow the filter's update rate (issue 4's bar). Callers that wait() for
+  /// so it cannot slow the filter's update rate (P-SLAM runs prediction alongside the
+  /// filter without holding it up). Callers that wait() for
   /// every prediction (reproducible missions) keep kNormal: waiting on a starved thread
   /// would cost them more than it saves.
   enum class Priority { kNormal, kBackground };

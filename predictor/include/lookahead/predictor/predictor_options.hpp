@@ -42,9 +42,9 @@ struct PredictorOptions {
   /// Beyond the paper, > 0: each prediction first registers surroundings this wide [m] with
   /// at most `large_max_conflict_share` of the walls on explored free cells, and only when
   /// that gives no hypothesis the surroundings of `surroundings_diameter` with
-  /// `max_conflict_share`. On the symmetric maze d = 14 m with 0.05 reaches further and is
-  /// as right (README, P-SLAM reproduction 1); on the KTH plans it matches almost nowhere
-  /// (reproduction 2), and the fallback keeps the hypotheses of d = 10 m there. 0: off.
+  /// `max_conflict_share`. Where the building repeats itself over large stretches (a
+  /// symmetric maze) the wide window reaches further and is as right; where it does not, it
+  /// rarely matches, and the fallback keeps the hypotheses of the smaller window. 0: off.
   double large_surroundings_diameter = 0.0;
   double large_max_conflict_share = 0.05;
   std::uint64_t seed = 1;  ///< of the random subset of reference corners

@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: MIT
+// The mission's decision step: the navigation state machine (navigation_state_machine.hpp)
+// driving target selection, path following, replanning and the recovery behaviours
+// (recovery_behaviour.hpp). Each state's step reports one event; the table says where it
+// leads.
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+
+#include "lookahead/exploration/mission.hpp"
+#include "lookahead/exploration/target_selection.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+// Selections in a row with no reachable frontier (each followed by a backtrack or a look
+// around) before the last resorts (recovery_behaviour.hpp).
+constexpr int kOrdinaryTries = 3;
+
+}  // namespace
+
+void Mission::decide() {
+  if (costmap_.empty()) return;
+  for (;;) {
+    const NavEvent event = step_state();
+    if (event == NavEvent::kNone) return;
+    const NavState next = next_state(nav_state_, event);
+    spdlog::trace("t {:.1f}: {} --{}--> {}", time_, to_string(nav_state_), to_string(event), to_string(next));
+    nav_state_ = next;
+    if (resting(nav_state_)) return;
+  }
+}
+
+NavEvent Mission::step_state() {
+  switch (nav_state_) {
+    case NavState::kLookAround:
+      return look_around_step();
+    case NavState::kSelectTarget:
+      return select_step();
+    case NavState::kFollow:
+      return follow_step();
+    case NavState::kReplan:
+      return replan_step();
+    case NavState::kRecover:
+      return recover_step();
+    case NavState::kDone:
+      return NavEvent::kNone;
+  }
+  return NavEvent::kNone;
+}
+
+NavEvent Mission::look_around_step() {
+  return turned_ < options_.initial_turn ? NavEvent::kNone : NavEvent::kLookedAround;
+}
+
+void Mission::goal_reached() {
+  // A reached goal whose frontier is still there cannot be explored from there (a corner
+  // the sensor cannot see from its goal, the inside of a wall): the frontier cells next to
+  // it are retired, and the spot is not picked again for a while.
+  if (squeezing_) escaped();  // it got through: the next trap gets all its tries
+  if (goal_ && !backtracking_) {
+    blacklist_.add(goal_->x, goal_->y, time_);
+    reached_goal_ = goal_;  // its frontier gets one more map update to clear
+  }
+}
+
+NavEvent Mission::follow_step() {
+  // Refresh and the reactive stop drop the follower when new walls block its path.
+  if (!follower_) return path_blocked_ ? NavEvent::kPathBlocked : NavEvent::kGoalDropped;
+  if (follower_->goal_reached()) {
+    goal_reached();
+    return NavEvent::kGoalReached;
+  }
+  if (time_ < next_goal_check_) return NavEvent::kNone;
+  next_goal_check_ = time_ + options_.goal_check_period;
+  const slam::Pose2 p = estimate();
+  const double d = std::hypot(goal_->x - p.x, goal_->y - p.y);
+  // A path around a wall can lead away from the goal for long: the stuck clock counts a
+  // shorter path left as progress on a detour (stuck_clock.hpp).
+  if (stuck_clock_.stuck(time_, d, follower_->remaining_length(), path_length_)) {
+    spdlog::debug(
+        "t {:.1f}: stuck on ({:.2f}, {:.2f}): {:.2f} m away, {:.2f} m of path left, {:.2f} m driven since "
+        "the last progress{}{}",
+        time_, goal_->x, goal_->y, d, follower_->remaining_length(), stuck_clock_.driven_since_progress(path_length_),
+        squeezing_ ? ", squeezing" : "", backtracking_ ? ", backtracking" : "");
+    blacklist_.add(goal_->x, goal_->y, time_);
+    ++stats_.stuck_goals;
+    return NavEvent::kStuck;
+  }
+  if (!goal_still_useful()) return NavEvent::kGoalExplored;
+  return goal_predicted() ? NavEvent::kGoalPredicted : NavEvent::kNone;
+}
+
+NavEvent Mission::replan_step() {
+  // A blocked path is no reason to change the target: only a target that stopped being
+  // worth it is. Re-choosing on every blocked path swaps between far frontiers.
+  if (!goal_ || !goal_still_useful()) return NavEvent::kGoalDropped;
+  if (replan_current_goal()) return NavEvent::kReplanned;
+  // No way to the goal any more. The map often lets it back a moment later, and a new
+  // selection resets the stuck clock, so two such goals could take turns for good: a spot
+  // whose replan fails a second time within the blacklist lifetime is a failed goal. Once
+  // is not: a door the margin flickers on closes a path for a moment only.
+  if (!backtracking_) {
+    if (replan_failures_.contains(goal_->x, goal_->y, time_))
+      blacklist_.add(goal_->x, goal_->y, time_);
+    else
+      replan_failures_.add(goal_->x, goal_->y, time_);
+  }
+  return NavEvent::kReplanFailed;
+}
+
+bool Mission::replan_current_goal() {
+  path_blocked_ = false;
+  const Selection s = replan_to_goal(selection_inputs(), *goal_);
+  count(s);
+  spdlog::debug("t {:.1f}: replan to ({:.2f}, {:.2f}): {}", time_, goal_->x, goal_->y,
+                s.outcome == SelectionOutcome::kPlanned ? "planned" : "failed");
+  if (s.outcome != SelectionOutcome::kPlanned) return false;
+  // The stuck clock keeps running: a goal that keeps getting blocked is given up in time.
+  follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
+  return true;
+}
+
+NavEvent Mission::select_step() {
+  path_blocked_ = false;
+  backtracking_ = false;
+  squeezing_ = false;
+  visiting_predicted_ = false;
+  follower_.reset();
+  goal_.reset();
+  blacklist_.expire(time_);
+  // Half through a door the margin closes, the ordinary costmap has no room where the robot
+  // stands: the next target is chosen as the squeeze chose its own. Out of the door, the
+  // margin has room again.
+  if (tight_) {
+    const slam::Pose2 p = estimate();
+    tight_ = !costmap_.is_free(p.x, p.y);
+    if (tight_ && squeeze()) return NavEvent::kSqueezed;
+  }
+  const Selection s = select_target(selection_inputs());
+  spdlog::debug("t {:.1f}: selection {}: clusters {}, candidates {}, plans {} ({} failed), goal ({:.2f}, {:.2f})",
+                time_, static_cast<int>(s.outcome), s.clusters, s.candidates, s.plans, s.plan_failures, s.goal_x,
+                s.goal_y);
+  ++stats_.selections;
+  count(s);
+  if (s.outcome == SelectionOutcome::kNoFrontier) {
+    status_ = MissionStatus::kDone;
+    return NavEvent::kNoFrontier;
+  }
+  if (s.outcome != SelectionOutcome::kPlanned) {
+    // Frontiers that are only blacklisted for a while are no trap: the robot looks around
+    // until an entry expires (each spot is retried at most max_strikes times).
+    if (s.waiting_on_blacklist) {
+      turned_ = 0.0;
+      return NavEvent::kWaitOnBlacklist;
+    }
+    ++unreachable_streak_;
+    last_unreachable_ = s.outcome == SelectionOutcome::kUnreachable;
+    return NavEvent::kNoPath;
+  }
+  unreachable_streak_ = 0;
+  escaped();
+  visiting_predicted_ = s.rest_predicted;
+  if (s.rest_predicted && stats_.rest_predicted_time < 0) stats_.rest_predicted_time = time_;
+  // P-SLAM predicts the region around the next exploration goal (sec. II-A, step 1).
+  if (lookahead_) lookahead_->request(map(), prediction_targets(s.goal_x, s.goal_y), time_);
+  follow(s, options_.follower);
+  return NavEvent::kPlanned;
+}
+
+void Mission::escaped() {
+  for (const auto& r : recoveries_) r->escaped();
+}
+
+class Mission::Actions final : public RecoveryActions {
+ public:
+  explicit Actions(Mission& m) : m_(m) {}
+  bool backtrack() override { return m_.backtrack(); }
+  bool squeeze() override { return m_.squeeze(); }
+  std::size_t forgive_blacklist() override { return m_.forgive_blacklist(); }
+  void look_around() override { m_.turned_ = 0.0; }
+
+ private:
+  Mission& m_;
+};
+
+NavEvent Mission::recover_step() {
+  // Maybe only for now: retrace the trail out of here, or turn once more to look around,
+  // and after kOrdinaryTries failed selections the last resorts, then the second chance.
+  Actions actions(*this);
+  const RecoveryContext context{last_unreachable_, unreachable_streak_, kOrdinaryTries};
+  switch (recover(recoveries_, context, actions)) {
+    case RecoveryOutcome::kFollowing:
+      return NavEvent::kRecovered;
+    case RecoveryOutcome::kStartOver:
+      unreachable_streak_ = 0;
+      escaped();
+      return NavEvent::kLookAgain;
+    case RecoveryOutcome::kLookingAround:
+      return NavEvent::kLookAgain;
+    case RecoveryOutcome::kFailed:
+      break;
+  }
+  status_ = MissionStatus::kTrapped;
+  return NavEvent::kExhausted;
+}
+
+void Mission::follow(const Selection& s, const planner::FollowerOptions& tracking) {
+  goal_ = planner::Point2{s.goal_x, s.goal_y};
+  follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
+  const slam::Pose2 p = estimate();
+  stuck_clock_.start(time_, std::hypot(s.goal_x - p.x, s.goal_y - p.y), planner::path_length(s.path), path_length_);
+  next_goal_check_ = time_ + options_.goal_check_period;
+}
+
+}  // namespace lookahead::exploration
