@@ -43,6 +43,20 @@ TEST_F(ScanMatcherTest, RecoversAnOdometryError) {
   EXPECT_GT(r.hit_ratio, 0.8);
 }
 
+// A turn the odometry misread by 0.15 rad: a climb whose first angular step covers the
+// odometry's rotation std reaches it, and the extra levels keep the finest step.
+TEST_F(ScanMatcherTest, AngularReachRecoversAMisreadTurn) {
+  const ScanMatcher matcher(ScanMatcherOptions{}, model);
+  const Pose2 start{truth.x + 0.05, truth.y, truth.theta - 0.15};
+  const MatchResult r = matcher.match(grid, start, scan, 0.1);
+  EXPECT_TRUE(r.ok);
+  EXPECT_NEAR(r.pose.x, truth.x, 0.04);
+  EXPECT_NEAR(r.pose.y, truth.y, 0.04);
+  EXPECT_NEAR(r.pose.theta, truth.theta, 0.01);
+  const MatchResult fine = matcher.match(grid, start, scan);
+  EXPECT_LT(fine.log_likelihood, r.log_likelihood);  // the 0.05 rad climb stops short
+}
+
 TEST_F(ScanMatcherTest, FailsWhenTheScanDoesNotFitTheMap) {
   const ScanMatcher matcher(ScanMatcherOptions{}, model);
   const PreparedScan wrong =

@@ -33,6 +33,12 @@ void OdometryMotionModel::sigmas(const Pose2& u, double& sx, double& sy, double&
   st = std::max(o_.min_sigma_theta, o_.stt * at + o_.srt * std::hypot(u.x, u.y));
 }
 
+double OdometryMotionModel::rotation_sigma(const Pose2& u) const {
+  double sx, sy, st;
+  sigmas(u, sx, sy, st);
+  return st;
+}
+
 Pose2 OdometryMotionModel::sample(const Pose2& previous, const Pose2& u, std::mt19937_64& rng) const {
   double sx, sy, st;
   sigmas(u, sx, sy, st);

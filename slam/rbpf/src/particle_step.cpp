@@ -11,7 +11,7 @@ bool draw_particle(const ParticleStepModels& m, const OccupancyGrid& map, Pose2&
   const Pose2 predicted = pose.compose(u);
   const bool match_scan = warm && m.options.proposal.kind == ProposalKind::kScanMatch;
   MatchResult match;
-  if (match_scan) match = m.matcher.match(map, predicted, prepared);
+  if (match_scan) match = m.matcher.match(map, predicted, prepared, m.motion.rotation_sigma(u));
   bool failed = false;
   if (match_scan && match.ok) {
     const ProposalDraw d =

@@ -10,6 +10,7 @@
 
 #include "lookahead/slam/limits/input_limits.hpp"
 #include "lookahead/slam/parallel/parallel_errors.hpp"
+#include "lookahead/slam/rbpf/interpolated_trajectory.hpp"
 #include "lookahead/slam/rbpf/particle_filter.hpp"
 #include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/sensor/scan_inserter.hpp"
@@ -66,7 +67,11 @@ bool Rbpf::add_scan(const LaserScan& scan) {
     initialize(scan);
     return true;
   }
-  if (!motion_threshold_met(scan)) return false;
+  if (!motion_threshold_met(scan)) {
+    track_between_updates(scan);
+    return false;
+  }
+  since_update_.push_back(Pose2{});
   update_particles(scan);  // Grisetti et al. sec. IV steps 1-4: proposal, weights, map
   resample_if_needed();    // step 5: selective resampling
   last_update_odometry_ = scan.odometry;
@@ -80,9 +85,32 @@ void Rbpf::initialize(const LaserScan& scan) {
   check_particle_memory(p.map, options_.particles);
   p.trajectory = std::make_shared<TrajectoryNode>(p.pose, 0, nullptr);
   particles_.assign(static_cast<std::size_t>(options_.particles), p);
+  since_update_.assign(1, Pose2{});
   last_update_odometry_ = scan.odometry;
   stats_.updates = 1;
   stats_.neff.push_back(static_cast<double>(options_.particles));
+}
+
+// A scan between updates is matched on the best particle's map (weights, and so the best
+// particle, change only at updates): its pose relative to the last update, for the trajectory
+// and the pose a robot in the loop plans from. The map is not changed.
+void Rbpf::track_between_updates(const LaserScan& scan) {
+  const Particle& best = particles_[best_particle()];
+  const Pose2 guess = best.pose.compose(tracked_motion());
+  Pose2 at = guess;
+  if (stats_.updates > static_cast<std::size_t>(options_.warmup_updates) &&
+      options_.proposal.kind == ProposalKind::kScanMatch) {
+    const MatchResult m = matcher_.match(best.map, guess, prepare_scan(scan, options_.likelihood));
+    if (m.ok) at = m.pose;
+  }
+  since_update_.push_back(best.pose.between(at));
+}
+
+// The motion since the last update as the scans between matched it, plus the latest scan's
+// odometry step: where the latest scan is looked for.
+Pose2 Rbpf::tracked_motion() const {
+  const std::size_t n = odometry_.size();
+  return since_update_.back().compose(odometry_[n - 2].between(odometry_[n - 1]));
 }
 
 bool Rbpf::motion_threshold_met(const LaserScan& scan) const {
@@ -187,14 +215,14 @@ std::size_t Rbpf::best_particle() const { return best_particle_index(particles_)
 
 Pose2 Rbpf::current_pose() const {
   if (particles_.empty()) return {};
-  return particles_[best_particle()].pose.compose(last_update_odometry_.between(odometry_.back()));
+  return particles_[best_particle()].pose.compose(since_update_.back());
 }
 
 Pose2 Rbpf::mean_pose() const {
   if (particles_.empty()) return {};
   const Pose2 mean =
       weighted_mean_pose(particle_weights(particles_), [&](std::size_t m) { return particles_[m].pose; });
-  return mean.compose(last_update_odometry_.between(odometry_.back()));
+  return mean.compose(since_update_.back());
 }
 
 std::vector<Pose2> Rbpf::best_trajectory() const {
@@ -203,9 +231,10 @@ std::vector<Pose2> Rbpf::best_trajectory() const {
   for (const TrajectoryNode* n : chain_oldest_first(particles_[best_particle()].trajectory.get())) {
     updates.emplace_back(n->scan_index, n->pose);
   }
-  // Between updates: the update's pose moved by the odometry since its scan.
-  return poses_at_every_scan(updates, timestamps_.size(),
-                             [&](std::size_t from, std::size_t to) { return odometry_[from].between(odometry_[to]); });
+  // A radian of turn weighs as much as the update thresholds make it (0.5 m / 0.25 rad: 2 m).
+  const double metres_per_radian = options_.angular_update > 0 ? options_.linear_update / options_.angular_update : 0.0;
+  return interpolate_between_updates(
+      updates, odometry_, [&](std::size_t, std::size_t s) { return since_update_[s]; }, metres_per_radian);
 }
 
 }  // namespace lookahead::slam

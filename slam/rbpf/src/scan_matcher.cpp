@@ -5,15 +5,24 @@
 
 namespace lookahead::slam {
 
-MatchResult ScanMatcher::match(const OccupancyGrid& grid, const Pose2& start, const PreparedScan& scan) const {
+MatchResult ScanMatcher::match(const OccupancyGrid& grid, const Pose2& start, const PreparedScan& scan,
+                               double angular_reach) const {
   MatchResult r;
   r.pose = start;
   r.log_likelihood = model_.log_likelihood(grid, start, scan);
   r.evaluations = 1;
   double lin = options_.linear_step;
+  // A first angular step of one rotation std of the odometry: a hill climb that starts
+  // finer stops on the first local optimum near a misread turn and the particle keeps the
+  // turn the odometry reported. The extra levels keep the finest step as configured.
   double ang = options_.angular_step;
+  int levels = options_.refinements;
+  while (ang < angular_reach) {
+    ang *= 2.0;
+    ++levels;
+  }
   int moves = 0;
-  for (int level = 0; level <= options_.refinements && moves < options_.max_iterations; ++level) {
+  for (int level = 0; level <= levels && moves < options_.max_iterations; ++level) {
     bool improved = true;
     while (improved && moves < options_.max_iterations) {
       improved = false;
@@ -43,7 +52,7 @@ MatchResult ScanMatcher::match(const OccupancyGrid& grid, const Pose2& start, co
         ++moves;
       }
     }
-    lin *= 0.5;
+    if (ang <= options_.angular_step) lin *= 0.5;
     ang *= 0.5;
   }
   r.hit_ratio = model_.hit_ratio(grid, r.pose, scan);

@@ -52,7 +52,7 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v("temperature", o.likelihood.temperature, "exponent on the product over beams");
   v.section("matcher");
   v("linear_step", o.matcher.linear_step, "first step in x, y [m]");
-  v("angular_step", o.matcher.angular_step, "first step in theta [rad]");
+  v("angular_step", o.matcher.angular_step, "first step in theta, at least the odometry's rotation std [rad]");
   v("refinements", o.matcher.refinements, "step halvings");
   v("max_iterations", o.matcher.max_iterations, "cap on accepted moves");
   v("min_hit_ratio", o.matcher.min_hit_ratio, "match fails below this share of end points on walls, [0, 1]");

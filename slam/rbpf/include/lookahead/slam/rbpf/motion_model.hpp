@@ -36,6 +36,8 @@ class OdometryMotionModel {
   /// The standard deviations of the noise on u's three components (the Gaussian filters of
   /// slam/hybrid use them as the control covariance).
   void sigmas(const Pose2& u, double& sx, double& sy, double& st) const;
+  /// The standard deviation of the noise on u's rotation [rad].
+  [[nodiscard]] double rotation_sigma(const Pose2& u) const;
 
  private:
   MotionModelOptions o_;

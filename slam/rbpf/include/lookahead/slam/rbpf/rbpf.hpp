@@ -48,14 +48,15 @@ class Rbpf {
 
   [[nodiscard]] const std::vector<Particle>& particles() const { return particles_; }
   [[nodiscard]] std::size_t best_particle() const;
-  /// The best particle's pose for every scan added so far (scans between updates are placed
-  /// by odometry relative to the last updated pose).
+  /// The best particle's pose for every scan added so far. A scan between updates is placed
+  /// where it matched on the best particle's map (else by odometry), with the correction the
+  /// next update makes spread along the way (interpolated_trajectory.hpp).
   [[nodiscard]] std::vector<Pose2> best_trajectory() const;
   /// The best particle's estimate of the pose at the latest scan (its last updated pose
-  /// moved by the odometry since): what a robot in the loop plans from.
+  /// moved by the scans matched since): what a robot in the loop plans from.
   [[nodiscard]] Pose2 current_pose() const;
   /// The weighted mean of the particles' poses (circular mean of the headings), moved by the
-  /// odometry since the last update: the "final particle filter pose" of the SegSLAM paper's
+  /// motion matched since the last update: the "final particle filter pose" of the SegSLAM paper's
   /// Table II (Fairfield et al. 2010), which SegSlam::estimate() gives for SegSLAM.
   [[nodiscard]] Pose2 mean_pose() const;
   [[nodiscard]] const std::vector<double>& timestamps() const { return timestamps_; }
@@ -66,6 +67,8 @@ class Rbpf {
  private:
   void initialize(const LaserScan& scan);
   bool motion_threshold_met(const LaserScan& scan) const;
+  void track_between_updates(const LaserScan& scan);
+  [[nodiscard]] Pose2 tracked_motion() const;
   void update_particle(Particle& p, const Pose2& u, const LaserScan& scan, const PreparedScan& prepared,
                        std::mt19937_64& rng, bool& failed, HypothesisScore& predicted) const;
   void update_particles(const LaserScan& scan);
@@ -78,6 +81,7 @@ class Rbpf {
   LikelihoodFieldModel likelihood_;
   ScanMatcher matcher_;
   std::vector<Particle> particles_;
+  std::vector<Pose2> since_update_;  ///< per scan: the pose relative to the last update's
   std::vector<std::shared_ptr<const HypothesisMap>> hypotheses_;
   std::mt19937_64 rng_;
   Pose2 last_update_odometry_;

@@ -11,10 +11,12 @@
 namespace lookahead::slam {
 
 struct ScanMatcherOptions {
-  double linear_step = 0.05;   ///< first step in x and y [m]; halved at each refinement
-  double angular_step = 0.05;  ///< first step in theta [rad]; halved at each refinement
-  int refinements = 5;         ///< number of halvings
-  int max_iterations = 100;    ///< cap on accepted moves (bounds the cost per particle)
+  double linear_step = 0.05;  ///< first step in x and y [m]; halved at each refinement
+  /// first step in theta [rad], halved at each refinement; a match given a larger angular
+  /// reach starts at the reach, with as many more halvings (the finest step stays)
+  double angular_step = 0.05;
+  int refinements = 5;       ///< number of halvings
+  int max_iterations = 100;  ///< cap on accepted moves (bounds the cost per particle)
   /// The match fails (and the proposal falls back to odometry) when fewer end points than
   /// this share lie near an obstacle of the map.
   double min_hit_ratio = 0.3;
@@ -35,7 +37,10 @@ class ScanMatcher {
   ScanMatcher(const ScanMatcherOptions& options, const LikelihoodFieldModel& model)
       : options_(options), model_(model) {}
 
-  [[nodiscard]] MatchResult match(const OccupancyGrid& grid, const Pose2& start, const PreparedScan& scan) const;
+  /// Climbs from `start`. `angular_reach` [rad]: the first angular step is at least this
+  /// (the odometry's rotation std), so a misread turn is within the first steps' reach.
+  [[nodiscard]] MatchResult match(const OccupancyGrid& grid, const Pose2& start, const PreparedScan& scan,
+                                  double angular_reach = 0.0) const;
 
  private:
   ScanMatcherOptions options_;
