@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -13,7 +12,7 @@
 #include "lookahead/exploration/mission_picture.hpp"
 #include "lookahead/slam/io/map_io.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
-#include "lookahead/slam/io/provenance_json.hpp"
+#include "lookahead/slam/io/run_json.hpp"
 #include "lookahead/slam/io/trajectory_io.hpp"
 
 namespace lookahead::exploration {
@@ -164,10 +163,8 @@ void write_mission_outputs(const Mission& m, const MissionSummary& s, const std:
     traj.push_back({m.options().laser.period() + dt * static_cast<double>(i), m.estimated_path()[i]});
   slam::write_trajectory(dir + "/trajectory.txt", traj);
   // The figures, then where they come from and the whole effective configuration.
-  nlohmann::json j = nlohmann::json::parse(to_json(s));
-  j["provenance"] = slam::to_json(slam::provenance(m.options().slam.threads));
-  j["configuration_yaml"] = dump_mission_options(m.options());
-  std::ofstream(dir + "/run.json") << j.dump(2) << "\n";
+  slam::write_run_json(dir, nlohmann::json::parse(to_json(s)), m.options().slam.threads,
+                       dump_mission_options(m.options()));
   if (m.lookahead() && m.lookahead()->options().pictures)
     write_hypothesis_pictures(*m.lookahead(), m.world(), dir + "/predictions");
 }
