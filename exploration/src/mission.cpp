@@ -68,9 +68,9 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       replan_failures_(options.blacklist),
       stuck_clock_({options.stuck_time, false, options.detour_progress}),
       strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)),
-      // A spot is the same target within 1 m (the goal shifts as the map grows, as kSameGoalRadius);
-      // strikes never make an entry permanent: the map keeps growing around it.
-      predicted_targets_({kSameGoalRadius, options.lookahead.repredict_after, std::numeric_limits<int>::max()}),
+      // A spot is the same target within 1 m (the goal shifts as the map grows, as kSameGoalRadius).
+      predicted_targets_({kSameGoalRadius, options.lookahead.repredict_after,
+                          options.lookahead.predictor.surroundings_diameter, options.lookahead.repredict_growth}),
       recoveries_(make_recoveries(parse_recovery_order(options_.recovery_order))) {
   if (!reachable_.start_valid) check_start(world, world.source(), start, options.robot.radius);
   if (!reachable_.start_valid) {
@@ -175,7 +175,7 @@ std::vector<std::pair<double, double>> Mission::prediction_targets(double goal_x
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(map());
   const TargetList targets = selection_targets(clusters, goal_x, goal_y, straight_line_from(estimate()),
                                                options_.lookahead.targets_per_selection);
-  for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
+  for (const auto& [x, y] : targets) predicted_targets_.add(map(), x, y, time_);
   return targets;
 }
 
@@ -183,14 +183,13 @@ void Mission::predict_while_idle() {
   if (!lookahead_ || !options_.lookahead.predict_while_idle || !goal_ || !lookahead_->idle()) return;
   if (time_ < next_idle_prediction_) return;
   next_idle_prediction_ = time_ + options_.lookahead.latency;  // clusters() is not free
-  predicted_targets_.expire(time_);
   const slam::OccupancyGrid& m = map();
   const std::vector<FrontierCluster> clusters = frontiers_.clusters(m);
   const TargetList targets = unpredicted_frontier_targets(
       clusters, m, lookahead_->predicted(), skip_rule(), options_.lookahead.skip_share, predicted_targets_, time_,
       straight_line_from(estimate()), options_.lookahead.targets_per_selection);
   if (targets.empty()) return;
-  for (const auto& [x, y] : targets) predicted_targets_.add(x, y, time_);
+  for (const auto& [x, y] : targets) predicted_targets_.add(m, x, y, time_);
   lookahead_->request(m, targets, time_);
 }
 

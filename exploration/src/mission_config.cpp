@@ -82,6 +82,8 @@ void visit_lookahead_section(LookaheadOptions& o, V&& v) {
     "frontiers predicted per selection: the target, then the nearest");
   v("predict_while_idle", o.predict_while_idle, "an idle predictor predicts the nearest frontiers not covered yet");
   v("repredict_after", o.repredict_after, "... a frontier again after this long [s, simulated]");
+  v("repredict_growth", o.repredict_growth,
+    "... and once the known cells of its surroundings grew by this share (0: at once), >= 0");
   v("pictures", o.pictures, "write predictions/NNN.png and .pgm per hypothesis into the run folder (diagnosis)");
   predictor::visit_predictor_keys(o.predictor, v);
 }

@@ -102,6 +102,7 @@ void MissionOptions::validate() const {
   // known_boundary and skip_wall_slivers (on by default) shape the region variant's
   // regions; the far-side variant has none and ignores them.
   require(lookahead.repredict_after > 0, "lookahead.repredict_after > 0");
+  require(lookahead.repredict_growth >= 0, "lookahead.repredict_growth >= 0");
   require(lookahead.skip_confidence >= 0 && lookahead.skip_confidence <= 1, "lookahead.skip_confidence in [0, 1]");
   require(lookahead.skip_region_radius > 0, "lookahead.skip_region_radius > 0");
   require(lookahead.skip_share > 0 && lookahead.skip_share <= 1, "lookahead.skip_share in (0, 1]");

@@ -32,7 +32,7 @@ double PredictedMap::covered_share(const slam::OccupancyGrid& map, const Frontie
     // would leave neither explored nor predicted. A region no prediction touches is not
     // left out by one (RegionArea::covered): a frontier whose far side was seen since the
     // frontiers were last found has an empty region.
-    return left_out(region_area(map, cluster, rule), rule) ? 1.0 : 0.0;
+    return left_out(flood_region(map, *this, cluster, rule, rule.region_tolerance), rule) ? 1.0 : 0.0;
   }
   return predicted_share(map, cluster, rule.min_confidence);
 }

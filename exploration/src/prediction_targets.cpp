@@ -53,17 +53,17 @@ TargetList selection_targets(const std::vector<FrontierCluster>& clusters, doubl
 
 TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
                                         const PredictedMap& predicted, const SkipRule& rule, double skip_share,
-                                        const GoalBlacklist& tried, double now, const slam::Pose2& robot, int count) {
+                                        const PredictionAttempts& tried, double now, const slam::Pose2& robot, int count) {
   return unpredicted_frontier_targets(clusters, map, predicted, rule, skip_share, tried, now, straight_line_from(robot),
                                       count);
 }
 
 TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
                                         const PredictedMap& predicted, const SkipRule& rule, double skip_share,
-                                        const GoalBlacklist& tried, double now, const GoalDistance& distance,
+                                        const PredictionAttempts& tried, double now, const GoalDistance& distance,
                                         int count) {
   TargetList targets;
-  const auto open = [&](const FrontierCluster& f) { return !tried.contains(f.goal_x, f.goal_y, now); };
+  const auto open = [&](const FrontierCluster& f) { return !tried.tried_lately(map, f.goal_x, f.goal_y, now); };
   for (const FrontierCluster* f : nearest_first(clusters, distance, open)) {
     if (static_cast<int>(targets.size()) >= count) break;
     // Checked after the cheap tests: under the region rule this is a flood fill.

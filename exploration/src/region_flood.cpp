@@ -35,7 +35,7 @@ std::int64_t key(slam::CellIndex c) { return (static_cast<std::int64_t>(c.x) << 
 }  // namespace
 
 RegionArea flood_region(const slam::OccupancyGrid& map, const PredictedMap& look_ahead, const FrontierCluster& cluster,
-                        const SkipRule& rule) {
+                        const SkipRule& rule, double stop_above_unpredicted) {
   const slam::OccupancyGrid& cells = look_ahead.cells();
   const double min_confidence = rule.min_confidence;
   const slam::CellIndex g = map.cell_at(cluster.goal_x, cluster.goal_y);
@@ -107,7 +107,8 @@ RegionArea flood_region(const slam::OccupancyGrid& map, const PredictedMap& look
   for (const slam::CellIndex c : cluster.cells)
     for (const slam::CellIndex n : neighbours(c)) push(n);
   std::size_t unpredicted = 0, predicted = 0;
-  while (!open.empty()) {
+  const double cell = map.resolution() * map.resolution();
+  while (!open.empty() && static_cast<double>(unpredicted) * cell <= stop_above_unpredicted) {
     const slam::CellIndex c = open.front();
     open.pop_front();
     const bool known = cells.is_known(c) && look_ahead.confidence(c) >= min_confidence;
@@ -115,7 +116,6 @@ RegionArea flood_region(const slam::OccupancyGrid& map, const PredictedMap& look
     predicted += known;
     for (const slam::CellIndex n : neighbours(c)) push(n);
   }
-  const double cell = map.resolution() * map.resolution();
   return {static_cast<double>(predicted) * cell, static_cast<double>(unpredicted) * cell, closed_by_prediction,
           closed_by_gap, gap_of_prediction};
 }

@@ -33,6 +33,21 @@ bool better(const SimilarityScore& a, const SimilarityScore& b) {
   return a.psi > b.psi + kTie || (a.psi >= b.psi - kTie && a.new_known > b.new_known);
 }
 
+// Every k-th sample of a region: a quarter of the samples estimates Psi to within a few
+// hundredths, enough to tell the few alignments worth scoring in full.
+RegionSamples thinned(const RegionSamples& r, std::size_t k) {
+  RegionSamples out;
+  for (std::size_t i = 0; i < r.x.size(); i += k) {
+    out.x.push_back(r.x[i]);
+    out.y.push_back(r.y[i]);
+  }
+  return out;
+}
+
+// Alignments whose Psi on the thinned samples falls this far below the threshold are not
+// scored in full: most of the hundreds tried are nowhere near it.
+constexpr double kScreenMargin = 0.15;
+
 }  // namespace
 
 std::array<slam::Pose2, 4> corner_alignments(const Corner& control, const Corner& reference) {
@@ -55,15 +70,25 @@ Registration register_region(const CoarseOccupancy& map, const RegionSamples& ta
                              const std::vector<Corner>& corners, const PredictorOptions& o) {
   Registration r;
   const double min_new = o.min_predicted_area / (map.resolution() * map.resolution());
+  const TargetRegion target(map, target_region);
+  const TargetRegion screen(map, thinned(target_region, 4));
+  std::optional<Alignment> best_screened_out;  // reported only when no alignment passes
   for (const Corner* ref : reference_corners(control, corners, o)) {
     for (const slam::Pose2& t : corner_alignments(control, *ref)) {
       ++r.candidates;
-      const SimilarityScore s = similarity(map, map, target_region, t);
+      const SimilarityScore quick = similarity(screen, map, t);
+      if (quick.psi < o.similarity_threshold - kScreenMargin) {
+        if (!best_screened_out || quick.psi > best_screened_out->score.psi)
+          best_screened_out = Alignment{t, control, *ref, quick};
+        continue;
+      }
+      const SimilarityScore s = similarity(target, map, t);
       if (s.new_known < min_new) continue;                      // explains explored cells only: predicts nothing
       if (s.conflict_share() > o.max_conflict_share) continue;  // walls across known free space
       if (!r.best || better(s, r.best->score)) r.best = Alignment{t, control, *ref, s};
     }
   }
+  if (!r.best) r.best = best_screened_out;  // below the threshold either way: no hypothesis
   return r;
 }
 

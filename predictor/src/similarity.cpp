@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace lookahead::predictor {
 
@@ -20,8 +21,7 @@ CoarseOccupancy::CoarseOccupancy(const slam::OccupancyGrid& grid, double resolut
   w_ = static_cast<int>(std::ceil(((hi.x + 1) * fine - x0_) / res_)) + 1;
   h_ = static_cast<int>(std::ceil(((hi.y + 1) * fine - y0_) / res_)) + 1;
   const auto n = static_cast<std::size_t>(w_) * static_cast<std::size_t>(h_);
-  occupied_.assign(n, 0);
-  known_.assign(n, 0);
+  cells_.assign(n, 0);
   const std::int16_t on =
       static_cast<std::int16_t>(std::lround(1000.0 * std::log(occupied_threshold / (1.0 - occupied_threshold))));
   for (int cy = lo.y; cy <= hi.y; ++cy) {
@@ -30,31 +30,29 @@ CoarseOccupancy::CoarseOccupancy(const slam::OccupancyGrid& grid, double resolut
       if (l == slam::GridTile::kUnknown) continue;
       const int u = static_cast<int>(((cx + 0.5) * fine - x0_) / res_);
       const int v = static_cast<int>(((cy + 0.5) * fine - y0_) / res_);
-      const auto k = static_cast<std::size_t>(v * w_ + u);
-      known_[k] = 1;
-      if (l >= on) occupied_[k] = 1;
+      std::uint8_t& cell = cells_[static_cast<std::size_t>(v * w_ + u)];
+      cell |= kKnown;
+      if (l >= on) cell |= kOccupied;
     }
   }
-  near_ = occupied_;
-  if (tolerance_cells == 0) return;
   for (int v = 0; v < h_; ++v) {
     for (int u = 0; u < w_; ++u) {
-      if (!occupied_[static_cast<std::size_t>(v * w_ + u)]) continue;
+      if (!(cells_[static_cast<std::size_t>(v * w_ + u)] & kOccupied)) continue;
       for (int dv = -tolerance_cells; dv <= tolerance_cells; ++dv) {
         for (int du = -tolerance_cells; du <= tolerance_cells; ++du) {
           const int uu = u + du, vv = v + dv;
-          if (uu >= 0 && vv >= 0 && uu < w_ && vv < h_) near_[static_cast<std::size_t>(vv * w_ + uu)] = 1;
+          if (uu >= 0 && vv >= 0 && uu < w_ && vv < h_) cells_[static_cast<std::size_t>(vv * w_ + uu)] |= kNearOccupied;
         }
       }
     }
   }
 }
 
-bool CoarseOccupancy::read(const std::vector<std::uint8_t>& layer, double x, double y) const {
+std::uint8_t CoarseOccupancy::flags(double x, double y) const {
   const int u = static_cast<int>(std::floor((x - x0_) / res_));
   const int v = static_cast<int>(std::floor((y - y0_) / res_));
-  if (u < 0 || v < 0 || u >= w_ || v >= h_) return false;
-  return layer[static_cast<std::size_t>(v * w_ + u)] != 0;
+  if (u < 0 || v < 0 || u >= w_ || v >= h_) return 0;
+  return cells_[static_cast<std::size_t>(v * w_ + u)];
 }
 
 RegionSamples disc_samples(double cx, double cy, double diameter, double resolution) {
@@ -72,25 +70,37 @@ RegionSamples disc_samples(double cx, double cy, double diameter, double resolut
   return s;
 }
 
+TargetRegion::TargetRegion(const CoarseOccupancy& target_map, RegionSamples region) : samples(std::move(region)) {
+  flags.reserve(samples.x.size());
+  for (std::size_t k = 0; k < samples.x.size(); ++k) flags.push_back(target_map.flags(samples.x[k], samples.y[k]));
+}
+
 SimilarityScore similarity(const CoarseOccupancy& target_map, const CoarseOccupancy& reference_map,
                            const RegionSamples& region, const slam::Pose2& reference_to_target) {
+  return similarity(TargetRegion(target_map, region), reference_map, reference_to_target);
+}
+
+SimilarityScore similarity(const TargetRegion& target, const CoarseOccupancy& reference_map,
+                           const slam::Pose2& reference_to_target) {
+  using C = CoarseOccupancy;
   // Each target sample p looks up its reference point q = T^-1 (+) p.
   const slam::Pose2 inv = reference_to_target.inverse();
   const double c = std::cos(inv.theta), s = std::sin(inv.theta);
+  const RegionSamples& region = target.samples;
   SimilarityScore score;
   int shared = 0;  // I(i, j), counted from both sides
   for (std::size_t k = 0; k < region.x.size(); ++k) {
     const double px = region.x[k], py = region.y[k];
-    const double qx = inv.x + c * px - s * py, qy = inv.y + s * px + c * py;
-    const bool t_occ = target_map.occupied(px, py);
-    const bool r_occ = reference_map.occupied(qx, qy);
+    const std::uint8_t t = target.flags[k];
+    const std::uint8_t r = reference_map.flags(inv.x + c * px - s * py, inv.y + s * px + c * py);
+    const bool t_occ = t & C::kOccupied, r_occ = r & C::kOccupied;
+    const bool t_near = t & C::kNearOccupied, r_near = r & C::kNearOccupied;
+    const bool t_known = t & C::kKnown, r_known = r & C::kKnown;
     score.target_occupied += t_occ;
     score.reference_occupied += r_occ;
-    const bool t_near = target_map.near_occupied(px, py), r_near = reference_map.near_occupied(qx, qy);
     shared += (t_occ && r_near) + (r_occ && t_near);
-    score.conflicts +=
-        (t_occ && !r_near && reference_map.known(qx, qy)) + (r_occ && !t_near && target_map.known(px, py));
-    if (!target_map.known(px, py) && reference_map.known(qx, qy)) ++score.new_known;
+    score.conflicts += (t_occ && !r_near && r_known) + (r_occ && !t_near && t_known);
+    if (!t_known && r_known) ++score.new_known;
   }
   const int total = score.target_occupied + score.reference_occupied;
   score.psi = total > 0 ? static_cast<double>(shared) / total : 0.0;

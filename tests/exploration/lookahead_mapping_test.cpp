@@ -10,6 +10,7 @@
 #include "lookahead/exploration/mission_report.hpp"
 #include "lookahead/exploration/predicted_map.hpp"
 #include "lookahead/exploration/prediction_aware_strategy.hpp"
+#include "lookahead/exploration/region_flood.hpp"
 #include "lookahead/exploration/world_reachability.hpp"
 
 namespace lookahead::exploration {
@@ -97,6 +98,28 @@ TEST(PredictedMap, ARegionIsCoveredWhenPredictedOrClosedByAPredictedWall) {
   const RegionArea a = part.region_area(map, cluster, rule);
   EXPECT_NEAR(a.predicted + a.unpredicted, 0.39, 0.03);  // the half disc, split
   EXPECT_GT(a.predicted, 0.05);
+}
+
+// Deciding needs only the start of the flood: once more is unpredicted than the tolerance,
+// no rule leaves the region out, and the flood stops there with the same answer.
+TEST(PredictedMap, AFloodStopsOnceTooMuchIsUnpredicted) {
+  slam::OccupancyGrid map;
+  FrontierCluster cluster;
+  for (int y = 0; y < 20; ++y) {
+    map.add_log_odds({0, y}, -1000);
+    map.add_log_odds({-1, y}, -1000);
+    cluster.cells.push_back({0, y});
+  }
+  cluster.has_goal = true;
+  cluster.goal_y = 0.5;
+  const SkipRule rule = SkipRule::region(3.0).with_region_tolerance(0.1);
+  PredictedMap none;
+  const RegionArea whole = flood_region(map, none, cluster, rule);
+  const RegionArea stopped = flood_region(map, none, cluster, rule, 0.1);
+  EXPECT_GT(whole.unpredicted, 10.0);  // the half disc of 3 m
+  EXPECT_GT(stopped.unpredicted, 0.1);
+  EXPECT_LT(stopped.unpredicted, 0.2);  // a few cells past the tolerance
+  EXPECT_EQ(left_out(whole, rule), left_out(stopped, rule));
 }
 
 // A frontier whose far side has been seen since the frontiers were found has an empty

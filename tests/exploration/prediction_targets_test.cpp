@@ -55,8 +55,8 @@ TEST(PredictionTargets, AnIdlePredictorTakesTheNearestFrontiersNeitherCoveredNor
     for (int x = 0; x <= 10; ++x) h.grid.add_log_odds({x, y}, -1000);
   h.similarity = 0.8;
   predicted.add(h);
-  GoalBlacklist tried({1.0, 10.0, 1000});
-  tried.add(clusters[1].goal_x, clusters[1].goal_y, 0.0);  // tried at t = 0
+  PredictionAttempts tried({1.0, 10.0, 10.0, 0.0});
+  tried.add(map, clusters[1].goal_x, clusters[1].goal_y, 0.0);  // tried at t = 0
   const SkipRule rule;
   const slam::Pose2 robot{0, 0, 0};
   TargetList t = unpredicted_frontier_targets(clusters, map, predicted, rule, 1.0, tried, 5.0, robot, 4);
@@ -97,7 +97,7 @@ TEST(PredictionTargets, TheChosenGoalFirstThenTheNearestInAStraightLine) {
   EXPECT_EQ(t[0], std::make_pair(3.5, 2.5));  // the chosen goal first
   EXPECT_EQ(t[1], std::make_pair(0.5, 1.5));
   const PredictedMap nothing_predicted;
-  const GoalBlacklist tried({1.0, 10.0, 1000});
+  const PredictionAttempts tried;
   t = unpredicted_frontier_targets(room.clusters, room.map, nothing_predicted, SkipRule{}, 1.0, tried, 0.0, room.robot,
                                    1);
   ASSERT_EQ(t.size(), 1u);

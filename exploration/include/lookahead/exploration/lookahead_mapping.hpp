@@ -68,11 +68,13 @@ struct LookaheadOptions {
   int targets_per_selection = 4;
   /// While the predictor has nothing queued (off here, on in MissionOptions::defaults()), predict the nearest frontier
   /// goals that the look-ahead map does not cover yet (targets_per_selection at a time), a goal again only
-  /// `repredict_after` seconds after its last try (the map around it grows meanwhile). The paper predicts "the next
+  /// `repredict_after` seconds after its last try and once the known cells of its surroundings (diameter
+  /// predictor.surroundings_diameter) grew by `repredict_growth` (prediction_attempts.hpp). The paper predicts "the next
   /// possible exploration goal" (sec. II-A); every frontier is one, and a selection that knows which are predicted can
   /// leave them out.
   bool predict_while_idle = false;
   double repredict_after = 10.0;  ///< [s, simulated]
+  double repredict_growth = 0.1;  ///< share of known cells, >= 0
   /// Keep the map and the prediction of every hypothesis and write one picture each into
   /// the run folder (predictions/NNN.png, with the true walls of the target region): for
   /// finding out why a hypothesis scored low against the world. Costs memory; off by default.

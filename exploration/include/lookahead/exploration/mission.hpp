@@ -20,6 +20,7 @@
 #include "lookahead/exploration/mission_metrics.hpp"
 #include "lookahead/exploration/mission_options.hpp"
 #include "lookahead/exploration/navigation_state_machine.hpp"
+#include "lookahead/exploration/prediction_attempts.hpp"
 #include "lookahead/exploration/prediction_targets.hpp"
 #include "lookahead/exploration/reactive_stop.hpp"
 #include "lookahead/exploration/recovery_behaviour.hpp"
@@ -149,7 +150,7 @@ class Mission {
   StuckClock stuck_clock_;         ///< gives the current goal up when the robot makes no progress
   std::unique_ptr<TargetStrategy> strategy_;
   std::unique_ptr<LookaheadMapping> lookahead_;
-  GoalBlacklist predicted_targets_;  ///< frontier goals predicted lately (predict_while_idle)
+  PredictionAttempts predicted_targets_;  ///< frontier goals predicted lately (predict_while_idle)
   double next_idle_prediction_ = 0.0;
   planner::Costmap costmap_;
   std::unique_ptr<planner::PathFollower> follower_;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "lookahead/exploration/frontier_detector.hpp"
-#include "lookahead/exploration/goal_blacklist.hpp"
+#include "lookahead/exploration/prediction_attempts.hpp"
 #include "lookahead/exploration/predicted_map.hpp"
 #include "lookahead/planner/costmap.hpp"
 #include "lookahead/slam/geometry/pose2.hpp"
@@ -36,17 +36,16 @@ TargetList selection_targets(const std::vector<FrontierCluster>& clusters, doubl
                              const GoalDistance& distance, int count);
 
 /// Frontier goals worth a prediction while the predictor has nothing to do: not covered by
-/// the look-ahead map under `rule` (covered_share below `skip_share`) and not predicted
-/// within the memory's radius and lifetime (`tried`); nearest to `robot` first, `count` at
-/// most. The map around a frontier grows as the robot drives, so a frontier tried once is
-/// tried again when its memory entry expires.
+/// the look-ahead map under `rule` (covered_share below `skip_share`) and not tried lately
+/// (`tried`: a spot is tried again once its surroundings grew); nearest to `robot` first,
+/// `count` at most.
 TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
                                         const PredictedMap& predicted, const SkipRule& rule, double skip_share,
-                                        const GoalBlacklist& tried, double now, const slam::Pose2& robot, int count);
+                                        const PredictionAttempts& tried, double now, const slam::Pose2& robot, int count);
 /// The same, nearest by `distance` first; goals at infinite distance are left out.
 TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
                                         const PredictedMap& predicted, const SkipRule& rule, double skip_share,
-                                        const GoalBlacklist& tried, double now, const GoalDistance& distance,
+                                        const PredictionAttempts& tried, double now, const GoalDistance& distance,
                                         int count);
 
 }  // namespace lookahead::exploration

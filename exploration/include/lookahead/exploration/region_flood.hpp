@@ -9,6 +9,8 @@
 // still reveal.
 #pragma once
 
+#include <limits>
+
 #include "lookahead/exploration/frontier_detector.hpp"
 #include "lookahead/exploration/predicted_map.hpp"
 #include "lookahead/exploration/skip_rule.hpp"
@@ -17,7 +19,11 @@
 namespace lookahead::exploration {
 
 /// The unexplored region beyond `cluster` in `map`, with what `look_ahead` covers of it.
+/// The flood stops once more than `stop_above_unpredicted` [m^2] of it is unpredicted: a
+/// region that large is left out by no rule (left_out()), and most frontiers' regions are,
+/// so deciding needs a few hundred cells where the whole region holds tens of thousands.
 [[nodiscard]] RegionArea flood_region(const slam::OccupancyGrid& map, const PredictedMap& look_ahead,
-                                      const FrontierCluster& cluster, const SkipRule& rule);
+                                      const FrontierCluster& cluster, const SkipRule& rule,
+                                      double stop_above_unpredicted = std::numeric_limits<double>::infinity());
 
 }  // namespace lookahead::exploration

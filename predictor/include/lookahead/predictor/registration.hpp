@@ -30,8 +30,10 @@ struct Alignment {
 std::array<slam::Pose2, 4> corner_alignments(const Corner& control, const Corner& reference);
 
 struct Registration {
-  std::optional<Alignment> best;  ///< highest Psi among alignments that predict something
-  int candidates = 0;             ///< transforms scored
+  /// Highest Psi among alignments that predict something; when every alignment fell below
+  /// the screen (Psi on a quarter of the samples), the best of those, scored on that quarter.
+  std::optional<Alignment> best;
+  int candidates = 0;  ///< transforms scored
 };
 
 /// Tries every reference corner (bounded by options.max_reference_corners) against the

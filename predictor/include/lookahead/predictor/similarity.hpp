@@ -23,16 +23,19 @@ class CoarseOccupancy {
  public:
   CoarseOccupancy(const slam::OccupancyGrid& grid, double resolution, double occupied_threshold, int tolerance_cells);
   [[nodiscard]] double resolution() const { return res_; }
-  [[nodiscard]] bool occupied(double x, double y) const { return read(occupied_, x, y); }
+  [[nodiscard]] bool occupied(double x, double y) const { return flags(x, y) & kOccupied; }
   /// An occupied cell within the tolerance of (x, y).
-  [[nodiscard]] bool near_occupied(double x, double y) const { return read(near_, x, y); }
-  [[nodiscard]] bool known(double x, double y) const { return read(known_, x, y); }
+  [[nodiscard]] bool near_occupied(double x, double y) const { return flags(x, y) & kNearOccupied; }
+  [[nodiscard]] bool known(double x, double y) const { return flags(x, y) & kKnown; }
+  /// The three at once (bits kOccupied, kNearOccupied, kKnown; 0 outside): Psi reads every
+  /// cell of a region for each of hundreds of alignments, one read each.
+  [[nodiscard]] std::uint8_t flags(double x, double y) const;
+  static constexpr std::uint8_t kOccupied = 1, kNearOccupied = 2, kKnown = 4;
 
  private:
-  [[nodiscard]] bool read(const std::vector<std::uint8_t>& layer, double x, double y) const;
   double res_ = 0.1, x0_ = 0, y0_ = 0;
   int w_ = 0, h_ = 0;
-  std::vector<std::uint8_t> occupied_, near_, known_;
+  std::vector<std::uint8_t> cells_;
 };
 
 /// Sample points of a disc region: centres of the coarse cells within `diameter` / 2 of
@@ -61,5 +64,15 @@ struct SimilarityScore {
 /// brought onto it by `reference_to_target` (p_target = T (+) p_reference).
 SimilarityScore similarity(const CoarseOccupancy& target_map, const CoarseOccupancy& reference_map,
                            const RegionSamples& region, const slam::Pose2& reference_to_target);
+
+/// A target region with its cells read once: a registration scores hundreds of alignments
+/// of one region.
+struct TargetRegion {
+  TargetRegion(const CoarseOccupancy& target_map, RegionSamples samples);
+  RegionSamples samples;
+  std::vector<std::uint8_t> flags;  ///< target_map.flags() of each sample
+};
+SimilarityScore similarity(const TargetRegion& target, const CoarseOccupancy& reference_map,
+                           const slam::Pose2& reference_to_target);
 
 }  // namespace lookahead::predictor
