@@ -189,13 +189,11 @@ MissionOptions load_mission_options(const std::string& path, const MissionOption
 }
 
 std::string dump_mission_options(const MissionOptions& options) {
-  MissionOptions copy = options;
-  slam::config::SectionDumper d;
-  visit_sections(copy, d);
+  const std::string own = slam::config::dump_options(options, [](MissionOptions& o, auto& v) { visit_sections(o, v); });
   std::string slam_text = slam::dump_rbpf_options(options.slam), indented;
   std::istringstream in(slam_text);
   for (std::string l; std::getline(in, l);) indented += "  " + l + "\n";
-  return "# lookahead mission defaults (lookahead config dump mission): every key, with its unit\n" + d.str() +
+  return "# lookahead mission defaults (lookahead config dump mission): every key, with its unit\n" + own +
          "# RBPF options in the config/slam format. Derived, whatever is written here:\n"
          "# filter.seed from mission.seed, likelihood.max_range from laser.max_range.\n"
          "slam:\n" +

@@ -40,19 +40,13 @@ void validate_targets(const SlamLookaheadOptions& t) {
 LogPredictionOptions parse_log_prediction_options(const std::string& yaml, const std::string& source,
                                                   const LogPredictionOptions& base,
                                                   const std::set<std::string>& other_sections) {
-  const YAML::Node root = slam::config::parse_sections(yaml, source);
-  LogPredictionOptions o = base;
-  if (root.IsNull()) return o;
-  slam::config::SectionLoader loader(root, source);
-  visit_sections(o, loader);
-  loader.reject_unknown(other_sections);
-  try {
-    validate(o.predictor);
-    validate_targets(o.targets);
-  } catch (const std::invalid_argument& e) {
-    loader.fail_impossible(e.what());
-  }
-  return o;
+  return slam::config::parse_options(
+      yaml, source, base, [](LogPredictionOptions& o, auto& v) { visit_sections(o, v); },
+      [](const LogPredictionOptions& o) {
+        validate(o.predictor);
+        validate_targets(o.targets);
+      },
+      other_sections);
 }
 
 std::set<std::string> log_prediction_section_names() {
@@ -63,10 +57,7 @@ std::set<std::string> log_prediction_section_names() {
 }
 
 std::string dump_log_prediction_options(const LogPredictionOptions& options) {
-  LogPredictionOptions copy = options;
-  slam::config::SectionDumper d;
-  visit_sections(copy, d);
-  return d.str();
+  return slam::config::dump_options(options, [](LogPredictionOptions& o, auto& v) { visit_sections(o, v); });
 }
 
 }  // namespace lookahead::pipeline

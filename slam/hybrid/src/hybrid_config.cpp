@@ -94,26 +94,19 @@ void visit_sections(HybridConfig& c, V&& v) {
 }  // namespace
 
 HybridConfig parse_hybrid_config(const std::string& yaml, const std::string& source, const HybridConfig& base) {
-  const YAML::Node root = slam::config::parse_sections(yaml, source);
-  HybridConfig c = base;
-  if (root.IsNull()) return c;
-  slam::config::SectionLoader loader(root, source);
-  visit_sections(c, loader);
-  loader.reject_unknown();
-  try {
-    const FeatureExistence check(c.filter.existence);
-    if (c.filter.fastslam.particles < 1) throw std::invalid_argument("fastslam.particles must be >= 1");
-    if (!(c.filter.fusion.period > 0.0)) throw std::invalid_argument("fusion.period must be > 0");
-    if (c.filter.fusion.relinearise_iterations < 1)
-      throw std::invalid_argument("fusion.relinearise_iterations must be >= 1");
-    if (c.study.alphas.size() != c.study.betas.size())
-      throw std::invalid_argument("study.alphas and study.betas differ in length");
-    if (!(c.simulation.dt > 0.0)) throw std::invalid_argument("simulation.dt must be > 0");
-    validate(c.scan_landmarks);
-  } catch (const std::invalid_argument& e) {
-    loader.fail_impossible(e.what());
-  }
-  return c;
+  return slam::config::parse_options(
+      yaml, source, base, [](HybridConfig& c, auto& v) { visit_sections(c, v); },
+      [](const HybridConfig& c) {
+        const FeatureExistence check(c.filter.existence);
+        if (c.filter.fastslam.particles < 1) throw std::invalid_argument("fastslam.particles must be >= 1");
+        if (!(c.filter.fusion.period > 0.0)) throw std::invalid_argument("fusion.period must be > 0");
+        if (c.filter.fusion.relinearise_iterations < 1)
+          throw std::invalid_argument("fusion.relinearise_iterations must be >= 1");
+        if (c.study.alphas.size() != c.study.betas.size())
+          throw std::invalid_argument("study.alphas and study.betas differ in length");
+        if (!(c.simulation.dt > 0.0)) throw std::invalid_argument("simulation.dt must be > 0");
+        validate(c.scan_landmarks);
+      });
 }
 
 HybridConfig load_hybrid_config(const std::string& path, const HybridConfig& base) {
@@ -140,10 +133,7 @@ HybridConfig load_hybrid_log_config(const std::string& path, const HybridConfig&
 }
 
 std::string dump_hybrid_config(const HybridConfig& config) {
-  HybridConfig copy = config;
-  slam::config::SectionDumper d;
-  visit_sections(copy, d);
-  return d.str();
+  return slam::config::dump_options(config, [](HybridConfig& c, auto& v) { visit_sections(c, v); });
 }
 
 }  // namespace lookahead::slam::hybrid

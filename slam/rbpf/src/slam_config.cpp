@@ -74,18 +74,10 @@ void visit_sections(RbpfOptions& o, V&& v) {
 
 RbpfOptions parse_rbpf_options(const std::string& yaml, const std::string& source, const RbpfOptions& base,
                                const std::set<std::string>& other_sections) {
-  const YAML::Node root = config::parse_sections(yaml, source);
-  RbpfOptions o = base;
-  if (root.IsNull()) return o;
-  config::SectionLoader loader(root, source);
-  visit_sections(o, loader);
-  loader.reject_unknown(other_sections);
-  try {
-    const Rbpf check(o);  // the components validate their own options; no particles yet
-  } catch (const std::invalid_argument& e) {
-    loader.fail_impossible(e.what());
-  }
-  return o;
+  return config::parse_options(
+      yaml, source, base, [](RbpfOptions& o, auto& v) { visit_sections(o, v); },
+      // The components validate their own options; no particles yet.
+      [](const RbpfOptions& o) { const Rbpf check(o); }, other_sections);
 }
 
 RbpfOptions load_rbpf_options(const std::string& path, const RbpfOptions& base) {
@@ -100,10 +92,7 @@ std::set<std::string> rbpf_section_names() {
 }
 
 std::string dump_rbpf_options(const RbpfOptions& options) {
-  RbpfOptions copy = options;
-  config::SectionDumper d;
-  visit_sections(copy, d);
-  return d.str();
+  return config::dump_options(options, [](RbpfOptions& o, auto& v) { visit_sections(o, v); });
 }
 
 }  // namespace lookahead::slam

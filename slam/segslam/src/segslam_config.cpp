@@ -60,18 +60,9 @@ void visit_sections(SegSlamOptions& o, V&& v) {
 }  // namespace
 
 SegSlamOptions parse_segslam_options(const std::string& yaml, const std::string& source, const SegSlamOptions& base) {
-  const YAML::Node root = config::parse_sections(yaml, source);
-  SegSlamOptions o = base;
-  if (root.IsNull()) return o;
-  config::SectionLoader loader(root, source);
-  visit_sections(o, loader);
-  loader.reject_unknown();
-  try {
-    segslam::validate(o);
-  } catch (const std::invalid_argument& e) {
-    loader.fail_impossible(e.what());
-  }
-  return o;
+  return config::parse_options(
+      yaml, source, base, [](SegSlamOptions& o, auto& v) { visit_sections(o, v); },
+      [](const SegSlamOptions& o) { segslam::validate(o); });
 }
 
 SegSlamOptions load_segslam_options(const std::string& path, const SegSlamOptions& base) {
@@ -79,10 +70,7 @@ SegSlamOptions load_segslam_options(const std::string& path, const SegSlamOption
 }
 
 std::string dump_segslam_options(const SegSlamOptions& options) {
-  SegSlamOptions copy = options;
-  config::SectionDumper d;
-  visit_sections(copy, d);
-  return d.str();
+  return config::dump_options(options, [](SegSlamOptions& o, auto& v) { visit_sections(o, v); });
 }
 
 }  // namespace lookahead::slam

@@ -64,21 +64,14 @@ void visit_sections(Slam3dOptions& o, V&& v) {
 }  // namespace
 
 Slam3dOptions parse_slam3d_options(const std::string& yaml, const std::string& source, const Slam3dOptions& base) {
-  const YAML::Node root = config::parse_sections(yaml, source);
-  Slam3dOptions o = base;
-  if (root.IsNull()) return o;
-  config::SectionLoader loader(root, source);
-  visit_sections(o, loader);
-  loader.reject_unknown();
-  try {
-    o.filter.validate();
-    o.robot.validate();
-    if (o.threedtk.point_step < 1) throw std::invalid_argument("threedtk: point_step must be >= 1");
-    if (!(o.world_resolution > 0.0)) throw std::invalid_argument("robot: world_resolution must be > 0");
-  } catch (const std::invalid_argument& e) {
-    loader.fail_impossible(e.what());
-  }
-  return o;
+  return config::parse_options(
+      yaml, source, base, [](Slam3dOptions& o, auto& v) { visit_sections(o, v); },
+      [](const Slam3dOptions& o) {
+        o.filter.validate();
+        o.robot.validate();
+        if (o.threedtk.point_step < 1) throw std::invalid_argument("threedtk: point_step must be >= 1");
+        if (!(o.world_resolution > 0.0)) throw std::invalid_argument("robot: world_resolution must be > 0");
+      });
 }
 
 Slam3dOptions load_slam3d_options(const std::string& path, const Slam3dOptions& base) {
@@ -86,10 +79,8 @@ Slam3dOptions load_slam3d_options(const std::string& path, const Slam3dOptions& 
 }
 
 std::string dump_slam3d_options(const Slam3dOptions& options) {
-  Slam3dOptions copy = options;
-  config::SectionDumper dumper;
-  visit_sections(copy, dumper);
-  return "# lookahead slam3d defaults (lookahead config dump slam3d)\n" + dumper.str();
+  return "# lookahead slam3d defaults (lookahead config dump slam3d)\n" +
+         config::dump_options(options, [](Slam3dOptions& o, auto& v) { visit_sections(o, v); });
 }
 
 }  // namespace lookahead::slam

@@ -11,6 +11,7 @@
 
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "lookahead/slam/config/named_choice.hpp"
@@ -97,5 +98,35 @@ class SectionDumper {
  private:
   std::ostringstream out_;
 };
+
+/// The one loader of every configuration file: `yaml` read over `base` through the key list
+/// `visit(options, loader)` walks, every other section and key refused (but
+/// `other_sections`, which another loader reads), then `check(options)`, whose
+/// std::invalid_argument becomes the ParseError of the first key it names.
+template <typename Options, typename Visit, typename Check>
+Options parse_options(const std::string& yaml, const std::string& source, const Options& base, Visit&& visit,
+                      Check&& check, const std::set<std::string>& other_sections = {}) {
+  const YAML::Node root = parse_sections(yaml, source);
+  Options o = base;
+  if (root.IsNull()) return o;
+  SectionLoader loader(root, source);
+  visit(o, loader);
+  loader.reject_unknown(other_sections);
+  try {
+    check(o);
+  } catch (const std::invalid_argument& e) {
+    loader.fail_impossible(e.what());
+  }
+  return o;
+}
+
+/// Every key `visit` walks, with its value in `options` and its documentation, as YAML.
+template <typename Options, typename Visit>
+std::string dump_options(const Options& options, Visit&& visit) {
+  Options copy = options;  // the key list takes fields by reference, for the loader
+  SectionDumper d;
+  visit(copy, d);
+  return d.str();
+}
 
 }  // namespace lookahead::slam::config
