@@ -4,9 +4,10 @@
 run.json). Standard library only.
 
   prediction_study.py report OUT          markdown on stdout
-  prediction_study.py subset STUDY OUT STRATEGIES SEEDS PLANS
+  prediction_study.py subset STUDY OUT STRATEGIES SEEDS PLANS [MAX_AREA]
                                           STUDY with only the named strategies, seeds and
-                                          plan labels (space-separated; empty: all)
+                                          plan labels (space-separated; empty: all), and
+                                          only plans of at most MAX_AREA m^2 free
 
 Paired comparisons: per plan and seed, a strategy's time to 95 % of the reachable area
 explored over nearest's; the geometric mean of these ratios with a 95 % bootstrap interval
@@ -152,7 +153,7 @@ def funnel_report(runs):
         print(f'| {s} | {f[0]} | {f[1]} | {f[2]} | {f[3]} | {right} |')
 
 
-def subset(study, out, strategies, seeds, plans):
+def subset(study, out, strategies, seeds, plans, max_area=''):
     text = open(study).read()
     base = os.path.relpath(os.path.dirname(os.path.abspath(study)), os.path.dirname(os.path.abspath(out)))
     head, rest = text.split('worlds:\n', 1)
@@ -160,6 +161,8 @@ def subset(study, out, strategies, seeds, plans):
     items = worlds.split('  - name: ')[1:]
     if plans.split():
         items = [i for i in items if re.search(r'label: (\S+)', i).group(1) in plans.split()]
+    if max_area:  # the free area each world's comment states: "# W m x H m, A m^2 free"
+        items = [i for i in items if int(re.search(r'(\d+) m\^2 free', i).group(1)) <= float(max_area)]
     items = [re.sub(r'^(\S+)', lambda m: os.path.join(base, m.group(1)), i) for i in items]
     tail = 'strategies:' + tail
     if strategies.split():
@@ -172,7 +175,7 @@ def subset(study, out, strategies, seeds, plans):
 if __name__ == '__main__':
     if len(sys.argv) >= 3 and sys.argv[1] == 'report':
         report(sys.argv[2])
-    elif len(sys.argv) == 7 and sys.argv[1] == 'subset':
+    elif len(sys.argv) in (7, 8) and sys.argv[1] == 'subset':
         subset(*sys.argv[2:])
     else:
         sys.exit(__doc__)

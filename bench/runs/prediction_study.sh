@@ -7,7 +7,8 @@
 # the missions that did not reach the goal and why, the predictor's funnel and wall time per
 # mission (bench/runs/prediction_study.py).
 # Usage: bash bench/runs/prediction_study.sh [STUDY.yaml]
-#   STRATEGIES="nearest advantage" SEEDS="1 2" PLANS="kth_50055649 kth_50045369" pick a subset
+#   STRATEGIES="nearest advantage" SEEDS="1 2" PLANS="kth_50055649 kth_50045369" pick a subset,
+#   MAX_AREA=800 only the plans of at most 800 m^2 free
 #   (written as OUT/study.yaml); JOBS=2 runs in parallel; LOOKAHEAD=/path/to/lookahead.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -15,9 +16,9 @@ source bench/runs/stamp.sh
 study=${1:-config/study/kth_all.yaml}
 out=out/study/$(basename "$study" .yaml)
 mkdir -p "$out"
-if [[ -n "${STRATEGIES:-}${SEEDS:-}${PLANS:-}" ]]; then
+if [[ -n "${STRATEGIES:-}${SEEDS:-}${PLANS:-}${MAX_AREA:-}" ]]; then
   python3 bench/runs/prediction_study.py subset "$study" "$out/study.yaml" \
-    "${STRATEGIES:-}" "${SEEDS:-}" "${PLANS:-}"
+    "${STRATEGIES:-}" "${SEEDS:-}" "${PLANS:-}" "${MAX_AREA:-}"
   study=$out/study.yaml
 fi
 stamp "$out"
