@@ -53,7 +53,8 @@ TargetList selection_targets(const std::vector<FrontierCluster>& clusters, doubl
 
 TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
                                         const PredictedMap& predicted, const SkipRule& rule, double skip_share,
-                                        const PredictionAttempts& tried, double now, const slam::Pose2& robot, int count) {
+                                        const PredictionAttempts& tried, double now, const slam::Pose2& robot,
+                                        int count) {
   return unpredicted_frontier_targets(clusters, map, predicted, rule, skip_share, tried, now, straight_line_from(robot),
                                       count);
 }

@@ -69,9 +69,9 @@ struct LookaheadOptions {
   /// While the predictor has nothing queued (off here, on in MissionOptions::defaults()), predict the nearest frontier
   /// goals that the look-ahead map does not cover yet (targets_per_selection at a time), a goal again only
   /// `repredict_after` seconds after its last try and once the known cells of its surroundings (diameter
-  /// predictor.surroundings_diameter) grew by `repredict_growth` (prediction_attempts.hpp). The paper predicts "the next
-  /// possible exploration goal" (sec. II-A); every frontier is one, and a selection that knows which are predicted can
-  /// leave them out.
+  /// predictor.surroundings_diameter) grew by `repredict_growth` (prediction_attempts.hpp). The paper predicts "the
+  /// next possible exploration goal" (sec. II-A); every frontier is one, and a selection that knows which are predicted
+  /// can leave them out.
   bool predict_while_idle = false;
   double repredict_after = 10.0;  ///< [s, simulated]
   double repredict_growth = 0.1;  ///< share of known cells, >= 0

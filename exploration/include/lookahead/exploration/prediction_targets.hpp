@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "lookahead/exploration/frontier_detector.hpp"
-#include "lookahead/exploration/prediction_attempts.hpp"
 #include "lookahead/exploration/predicted_map.hpp"
+#include "lookahead/exploration/prediction_attempts.hpp"
 #include "lookahead/planner/costmap.hpp"
 #include "lookahead/slam/geometry/pose2.hpp"
 
@@ -41,7 +41,8 @@ TargetList selection_targets(const std::vector<FrontierCluster>& clusters, doubl
 /// `count` at most.
 TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
                                         const PredictedMap& predicted, const SkipRule& rule, double skip_share,
-                                        const PredictionAttempts& tried, double now, const slam::Pose2& robot, int count);
+                                        const PredictionAttempts& tried, double now, const slam::Pose2& robot,
+                                        int count);
 /// The same, nearest by `distance` first; goals at infinite distance are left out.
 TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clusters, const slam::OccupancyGrid& map,
                                         const PredictedMap& predicted, const SkipRule& rule, double skip_share,
