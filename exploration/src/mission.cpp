@@ -224,8 +224,14 @@ void Mission::refresh() {
   }
   // A backtrack follows the robot's own trail, which the margin may have closed: that is
   // why it is taken. The reactive stop still guards it.
-  if (follower_ && !backtracking_ && !squeezing_ && !follower_->path_still_valid(costmap_)) {
-    follower_.reset();  // new walls block the path: replan from here (to the same goal)
+  using Clearance = planner::PathFollower::Clearance;
+  const Clearance clearance = kept_on_body_ ? Clearance::kBody : Clearance::kPlanning;
+  if (follower_ && !backtracking_ && !squeezing_ && !follower_->path_still_valid(costmap_, clearance)) {
+    // New walls block the path: replan from here (to the same goal). A path the margin
+    // closed but the body still fits stays at hand for the replan to compare with.
+    if (!kept_on_body_ && follower_->path_still_valid(costmap_, Clearance::kBody))
+      margin_blocked_ = std::move(follower_);
+    follower_.reset();
     path_blocked_ = true;
     ++stats_.replans;
   }

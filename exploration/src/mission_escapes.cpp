@@ -43,6 +43,7 @@ std::size_t Mission::forgive_blacklist() {
 planner::Costmap Mission::body_costmap() const {
   planner::CostmapOptions body = options_.planner.costmap;
   body.robot_radius = options_.robot.radius;
+  body.safety_margin = 0.0;
   return planner::Costmap(map(), body);
 }
 

@@ -17,6 +17,17 @@ namespace {
 // around) before the last resorts (recovery_behaviour.hpp).
 constexpr int kOrdinaryTries = 3;
 
+// A replan longer than this many times the blocked path's rest, plus the slack [m], turns
+// the robot the long way round. When the safety margin alone closed the blocked path (a
+// door it closes with one scan and opens with the next), the path is kept instead: taking
+// such replans swaps the robot between two ways round for as long as the door flickers.
+constexpr double kLongWayRound = 1.5;
+constexpr double kLongWayRoundSlack = 1.0;
+
+bool long_way_round(const planner::Path& replanned, const planner::PathFollower& blocked) {
+  return planner::path_length(replanned) > kLongWayRound * blocked.remaining_length() + kLongWayRoundSlack;
+}
+
 }  // namespace
 
 void Mission::decide() {
@@ -111,13 +122,23 @@ NavEvent Mission::replan_step() {
 
 bool Mission::replan_current_goal() {
   path_blocked_ = false;
+  std::unique_ptr<planner::PathFollower> blocked = std::move(margin_blocked_);
   const Selection s = replan_to_goal(selection_inputs(), *goal_);
   count(s);
-  spdlog::debug("t {:.1f}: replan to ({:.2f}, {:.2f}): {}", time_, goal_->x, goal_->y,
-                s.outcome == SelectionOutcome::kPlanned ? "planned" : "failed");
-  if (s.outcome != SelectionOutcome::kPlanned) return false;
+  const bool planned = s.outcome == SelectionOutcome::kPlanned;
+  const bool keep = blocked && (!planned || long_way_round(s.path, *blocked));
+  spdlog::debug("t {:.1f}: replan to ({:.2f}, {:.2f}): {}{}", time_, goal_->x, goal_->y, planned ? "planned" : "failed",
+                keep ? "; the path the margin closed is kept" : "");
   // The stuck clock keeps running: a goal that keeps getting blocked is given up in time.
+  if (keep) {
+    follower_ = std::move(blocked);
+    kept_on_body_ = true;
+    ++stats_.kept_paths;
+    return true;
+  }
+  if (!planned) return false;
   follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
+  kept_on_body_ = false;
   return true;
 }
 
@@ -127,6 +148,7 @@ NavEvent Mission::select_step() {
   squeezing_ = false;
   visiting_predicted_ = false;
   follower_.reset();
+  margin_blocked_.reset();
   goal_.reset();
   blacklist_.expire(time_);
   // Half through a door the margin closes, the ordinary costmap has no room where the robot
@@ -208,6 +230,7 @@ NavEvent Mission::recover_step() {
 void Mission::follow(const Selection& s, const planner::FollowerOptions& tracking) {
   goal_ = planner::Point2{s.goal_x, s.goal_y};
   follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
+  kept_on_body_ = false;
   const slam::Pose2 p = estimate();
   stuck_clock_.start(time_, std::hypot(s.goal_x - p.x, s.goal_y - p.y), planner::path_length(s.path), path_length_);
   next_goal_check_ = time_ + options_.goal_check_period;

@@ -73,6 +73,7 @@ MissionOptions MissionOptions::defaults() {
 
 void MissionOptions::harmonize() {
   planner.costmap.robot_radius = robot.radius + safety_margin;
+  planner.costmap.safety_margin = safety_margin;
   frontiers.robot_radius = robot.radius + safety_margin;
   frontiers.free_threshold = free_threshold;
   follower.max_linear_speed = robot.max_speed;

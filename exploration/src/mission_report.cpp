@@ -134,6 +134,7 @@ std::string to_json(const MissionSummary& s) {
   j["safety_stops"] = s.statistics.safety_stops;
   j["backtracks"] = s.statistics.backtracks;
   j["squeezes"] = s.statistics.squeezes;
+  j["kept_paths"] = s.statistics.kept_paths;
   j["retired_frontier_cells"] = s.statistics.retired_frontier_cells;
   j["slam_position_error_mean_m"] = s.slam_position_error_mean;
   j["slam_position_error_final_m"] = s.slam_position_error_final;

@@ -14,6 +14,7 @@ void validate(const CostmapOptions& o) {
   detail::check_range("CostmapOptions.occupied_threshold", o.occupied_threshold, 0.5, 1.0, "", detail::Bound::kOpen);
   detail::check_range("CostmapOptions.robot_radius", o.robot_radius, 0.0, 5.0, "m");
   detail::check_range("CostmapOptions.margin", o.margin, 0.0, 50.0, "m");
+  detail::check_range("CostmapOptions.safety_margin", o.safety_margin, 0.0, o.robot_radius, "m");
 }
 
 Costmap::Costmap(const slam::OccupancyGrid& map, const CostmapOptions& options)
@@ -52,12 +53,16 @@ void Costmap::inflate(const slam::OccupancyGrid& map, int x0, int y0, int x1, in
   mark_blocked_cells(map, bx0, by0, bw, bh, blocked);
   // Inflation: free only if no blocked centre lies within the radius (squared, in cells^2).
   const std::vector<double> d2 = detail::squared_distance_transform(blocked, bw, bh);
-  const double radius_cells = options_.robot_radius / resolution_;
   // The epsilon keeps a centre at exactly the radius blocked despite rounding of the division.
-  const double limit = radius_cells * radius_cells + 1e-9;
+  const auto limit = [&](double radius) { return (radius / resolution_) * (radius / resolution_) + 1e-9; };
+  const double free_limit = limit(options_.robot_radius);
+  const double body_limit = limit(options_.robot_radius - options_.safety_margin);
   for (int y = y0; y <= y1; ++y) {
     const double* row = &d2[static_cast<std::size_t>(y - by0) * static_cast<std::size_t>(bw)];
-    for (int x = x0; x <= x1; ++x) free_[index(x, y)] = row[x - bx0] > limit ? 1 : 0;
+    for (int x = x0; x <= x1; ++x) {
+      const double d = row[x - bx0];
+      free_[index(x, y)] = d > free_limit ? kFree : d > body_limit ? kBodyFits : kBlocked;
+    }
   }
 }
 
@@ -94,30 +99,55 @@ bool Costmap::contains(slam::CellIndex c) const {
 }
 
 bool Costmap::cell_is_free(slam::CellIndex c) const {
-  return contains(c) && free_[index(c.x - origin_.x, c.y - origin_.y)] != 0;
+  return contains(c) && free_[index(c.x - origin_.x, c.y - origin_.y)] == kFree;
 }
 
-bool Costmap::segment_is_free(Point2 a, Point2 b) const {
+bool Costmap::cell_fits_body(slam::CellIndex c) const {
+  return contains(c) && free_[index(c.x - origin_.x, c.y - origin_.y)] != kBlocked;
+}
+
+template <typename CellOk>
+bool Costmap::segment_passes(Point2 a, Point2 b, CellOk ok) const {
   if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) {
     return false;
   }
   return detail::walk_segment(a.x / resolution_, a.y / resolution_, b.x / resolution_, b.y / resolution_,
-                              [this](int x, int y, double) {
-                                return cell_is_free({x, y});
+                              [&](int x, int y, double) {
+                                return ok(slam::CellIndex{x, y});
                               });
 }
 
-bool Costmap::path_is_free(const Path& path) const {
+bool Costmap::segment_is_free(Point2 a, Point2 b) const {
+  return segment_passes(a, b, [this](slam::CellIndex c) { return cell_is_free(c); });
+}
+
+namespace {
+
+template <typename SegmentOk, typename PointOk>
+bool every_segment(const Path& path, SegmentOk segment_ok, PointOk point_ok) {
   if (path.empty()) return false;
-  if (path.size() == 1) return is_free(path.front());
+  if (path.size() == 1) return point_ok(path.front());
   for (std::size_t i = 1; i < path.size(); ++i) {
-    if (!segment_is_free(path[i - 1], path[i])) return false;
+    if (!segment_ok(path[i - 1], path[i])) return false;
   }
   return true;
 }
 
+}  // namespace
+
+bool Costmap::path_is_free(const Path& path) const {
+  return every_segment(
+      path, [this](Point2 a, Point2 b) { return segment_is_free(a, b); }, [this](Point2 p) { return is_free(p); });
+}
+
+bool Costmap::path_fits_body(const Path& path) const {
+  const auto fits = [this](slam::CellIndex c) { return cell_fits_body(c); };
+  return every_segment(
+      path, [&](Point2 a, Point2 b) { return segment_passes(a, b, fits); }, [this](Point2 p) { return fits_body(p); });
+}
+
 std::size_t Costmap::free_cell_count() const {
-  return static_cast<std::size_t>(std::count(free_.begin(), free_.end(), std::uint8_t{1}));
+  return static_cast<std::size_t>(std::count(free_.begin(), free_.end(), kFree));
 }
 
 }  // namespace lookahead::planner

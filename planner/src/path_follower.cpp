@@ -28,10 +28,11 @@ constexpr double kMaxEscape = 0.5;
 // The robot may stand inside the inflated band (pure pursuit cuts corners, the reactive
 // stop leaves it close to a wall): a plan from there starts with a stretch through blocked
 // cells back to free space. That stretch is the way out, not new walls on the path; it is
-// dropped so only the rest is checked. Returns false when no free point comes within
+// dropped so only the rest is checked. Returns false when no point that passes comes within
 // kMaxEscape of arc (the path really is blocked at its start).
-bool drop_escape(const Costmap& costmap, Path& path) {
-  if (costmap.is_free(path.front())) return true;
+template <typename PointOk>
+bool drop_escape(const Costmap& costmap, Path& path, PointOk passes) {
+  if (passes(path.front())) return true;
   const double step = 0.5 * costmap.resolution();
   double arc = 0.0;
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
@@ -39,7 +40,7 @@ bool drop_escape(const Costmap& costmap, Path& path) {
     for (double t = step; t < len + step && arc + std::min(t, len) <= kMaxEscape; t += step) {
       const double u = std::min(t, len) / std::max(len, 1e-12);
       const Point2 p{path[i].x + u * (path[i + 1].x - path[i].x), path[i].y + u * (path[i + 1].y - path[i].y)};
-      if (!costmap.is_free(p)) continue;
+      if (!passes(p)) continue;
       path.erase(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(i) + 1);
       path.insert(path.begin(), p);
       return true;
@@ -135,11 +136,16 @@ VelocityCommand PathFollower::command(const slam::Pose2& pose) {
   return {v, curvature * v};
 }
 
-bool PathFollower::path_still_valid(const Costmap& costmap) const {
+bool PathFollower::path_still_valid(const Costmap& costmap, Clearance clearance) const {
   if (goal_reached_) return true;
   Path remaining{projection_};
   remaining.insert(remaining.end(), path_.begin() + static_cast<std::ptrdiff_t>(segment_) + 1, path_.end());
-  return drop_escape(costmap, remaining) && costmap.path_is_free(remaining);
+  if (clearance == Clearance::kBody) {
+    return drop_escape(costmap, remaining, [&](Point2 p) { return costmap.fits_body(p); }) &&
+           costmap.path_fits_body(remaining);
+  }
+  return drop_escape(costmap, remaining, [&](Point2 p) { return costmap.is_free(p); }) &&
+         costmap.path_is_free(remaining);
 }
 
 double PathFollower::remaining_length() const {

@@ -29,15 +29,18 @@ MissionOptions kth_p2_more(std::uint64_t seed) {
   o.laser.max_range = 12;
   o.laser.angular_resolution = 0.008726646;
   o.frontiers.cluster_gap = 2;
-  // A one-hit costmap threshold and a stuck clock without detour progress: the setup that
-  // needs the second chance (the defaults, 0.8 and progress on detours, reach 95 % without).
+  // A one-hit costmap threshold and a stuck clock without detour progress: a setup whose
+  // doors the margin flickers on, which gives goals up for good (the defaults, 0.8 and
+  // progress on detours, reach 95 % with fewer give-ups).
   o.planner.costmap.occupied_threshold = 0.65;
   o.detour_progress = false;
   o.harmonize();
   return o;
 }
 
-TEST(MissionSecondChance, GoalsGivenUpDuringDetoursAreRetriedBeforeTrapped) {
+// Goals given up for good come back (the second chance) or are never given up (paths the
+// margin closes are kept): either way the mission reaches its goal, never `trapped`.
+TEST(MissionSecondChance, FlickeringDoorsDoNotTrapTheMission) {
   const fs::path plan =
       fs::path(LOOKAHEAD_SHARED_DIR) / "data/floorplans/kth/p2explore/floor_plans/50010540.png0.png0.png";
   if (!fs::exists(plan)) GTEST_SKIP() << plan << " missing";
@@ -50,7 +53,7 @@ TEST(MissionSecondChance, GoalsGivenUpDuringDetoursAreRetriedBeforeTrapped) {
   Mission m(w.world, w.start, o);
   const MissionStatus s = m.run();
   EXPECT_EQ(s, MissionStatus::kCoverageReached) << to_string(s) << " at " << m.coverage();
-  EXPECT_GE(m.statistics().forgiven_goals, 1);  // the second chance was needed
+  EXPECT_GE(m.statistics().forgiven_goals + m.statistics().kept_paths, 1);
   EXPECT_EQ(m.statistics().collisions, 0);
 }
 

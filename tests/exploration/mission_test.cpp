@@ -90,8 +90,9 @@ TEST(Mission, FrontierBehindANarrowSlitEndsTrapped) {
 }
 
 // A room whose only way out is a 0.35 m door: the 0.1 m robot fits (7.5 cm each side), but the
-// planning margin (0.08 m) closes it. The squeeze, the last resort, takes the robot through.
-TEST(Mission, DoorOnlyTheBodyFitsIsPassedAsALastResort) {
+// planning margin (0.08 m) closes it. The path planned before the door's jambs were seen is
+// kept while the body fits, or the squeeze, the last resort, takes the robot through.
+TEST(Mission, DoorOnlyTheBodyFitsIsPassed) {
   World world(300, 100, 0.05, {0, 0}, World::kOccupied);
   world.fill_rect({0.5, 0.5}, {4.0, 4.5}, World::kFree);    // the robot's room
   world.fill_rect({4.0, 2.30}, {4.6, 2.65}, World::kFree);  // the door, 0.6 m deep
@@ -103,7 +104,7 @@ TEST(Mission, DoorOnlyTheBodyFitsIsPassedAsALastResort) {
   const MissionStatus s = m.run();
   EXPECT_EQ(m.statistics().collisions, 0);
   EXPECT_EQ(s, MissionStatus::kCoverageReached) << to_string(s);
-  EXPECT_GE(m.statistics().squeezes, 1);
+  EXPECT_GE(m.statistics().squeezes + m.statistics().kept_paths, 1);
   EXPECT_GT(m.truth().x, 4.6);  // in the hall
 }
 

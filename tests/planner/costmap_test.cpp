@@ -72,6 +72,34 @@ TEST(Costmap, InflatesObstaclesByRobotRadius) {
   EXPECT_TRUE(c.cell_is_free({34, 34}));   // sqrt(32) > 5
 }
 
+TEST(Costmap, TheBodyFitsWhereOnlyTheSafetyMarginCloses) {
+  OccupancyGrid g;
+  fill(g, 0, 0, 59, 59, false);
+  set_occupied(g, {30, 30});
+  CostmapOptions o;  // 0.25 m = 5 cells, of which 0.1 m = 2 cells margin: the body is 3 cells
+  o.safety_margin = 0.1;
+  const Costmap c(g, o);
+  EXPECT_FALSE(c.cell_is_free({34, 30}));
+  EXPECT_TRUE(c.cell_fits_body({34, 30}));
+  EXPECT_FALSE(c.cell_fits_body({33, 30})) << "centre exactly at the body radius";
+  EXPECT_TRUE(c.cell_is_free({36, 30}) && c.cell_fits_body({36, 30}));
+  EXPECT_FALSE(c.cell_fits_body({-500, 10})) << "outside the raster";
+  // A path 4 cells past the obstacle keeps the body clear but not the margin.
+  const Path past{{1.0, 1.725}, {2.0, 1.725}};
+  EXPECT_FALSE(c.path_is_free(past));
+  EXPECT_TRUE(c.path_fits_body(past));
+  EXPECT_FALSE(c.path_fits_body({{1.0, 1.525}, {2.0, 1.525}}));
+  EXPECT_EQ(c.free_cell_count(), Costmap(g, CostmapOptions{}).free_cell_count()) << "the margin still plans";
+}
+
+TEST(Costmap, RejectsAMarginWiderThanTheRadius) {
+  CostmapOptions o;
+  o.safety_margin = 0.3;
+  EXPECT_THROW(validate(o), std::invalid_argument);
+  o.safety_margin = -0.01;
+  EXPECT_THROW(validate(o), std::invalid_argument);
+}
+
 TEST(Costmap, InflationMatchesBruteForceOnRandomGrids) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 5; ++trial) {

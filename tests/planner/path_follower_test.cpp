@@ -154,6 +154,23 @@ TEST(PathFollower, TheWayOutOfTheInflatedBandIsNoBlockedPath) {
   EXPECT_FALSE(out_of_band.path_still_valid(Costmap(boxed, co)));
 }
 
+// A door the margin closes and opens again with every scan: a path may be checked with the
+// body alone, which still fits where the margin closes.
+TEST(PathFollower, ThePathStaysValidForTheBodyWhereOnlyTheMarginCloses) {
+  using Clearance = PathFollower::Clearance;
+  CostmapOptions co;
+  co.robot_radius = 0.3;
+  co.safety_margin = 0.1;
+  slam::OccupancyGrid g = testing::walled_room();
+  const PathFollower follower({{0.5, 1.475}, {3.5, 1.475}});
+  EXPECT_TRUE(follower.path_still_valid(Costmap(g, co)));
+  testing::fill(g, 40, 34, 44, 40, true);  // a box whose edge ends 0.25 m beside the path
+  EXPECT_FALSE(follower.path_still_valid(Costmap(g, co), Clearance::kPlanning));
+  EXPECT_TRUE(follower.path_still_valid(Costmap(g, co), Clearance::kBody));
+  testing::fill(g, 40, 33, 44, 33, true);  // now 0.2 m: the body no longer fits
+  EXPECT_FALSE(follower.path_still_valid(Costmap(g, co), Clearance::kBody));
+}
+
 TEST(PathFollower, RejectsEmptyPathAndBadOptions) {
   EXPECT_THROW(PathFollower(Path{}), std::invalid_argument);
   FollowerOptions o;

@@ -50,9 +50,10 @@ struct MissionStatistics {
   int selections = 0, plans = 0, plan_failures = 0, replans = 0, stuck_goals = 0, grid_fallbacks = 0;
   double planning_time = 0.0;  ///< wall clock [s]
   int collisions = 0;
-  int safety_stops = 0;                    ///< steps the reactive stop held the robot
-  int backtracks = 0;                      ///< escapes along the robot's own trail (no frontier was reachable)
-  int squeezes = 0;                        ///< paths planned without the safety margin
+  int safety_stops = 0;  ///< steps the reactive stop held the robot
+  int backtracks = 0;    ///< escapes along the robot's own trail (no frontier was reachable)
+  int squeezes = 0;      ///< paths planned without the safety margin
+  int kept_paths = 0;    ///< paths the margin closed, kept while the body fits (the replan went the long way or failed)
   int forgiven_goals = 0;                  ///< goals blacklisted for good, retried before "trapped"
   std::size_t retired_frontier_cells = 0;  ///< frontier cells that outlived a visit
   std::size_t scans = 0, map_refreshes = 0;
@@ -154,6 +155,11 @@ class Mission {
   double next_idle_prediction_ = 0.0;
   planner::Costmap costmap_;
   std::unique_ptr<planner::PathFollower> follower_;
+  /// The current path is checked with the body alone: the safety margin closed it, and the
+  /// replan would have taken the long way round (a door the margin flickers on).
+  bool kept_on_body_ = false;
+  /// A path the margin closed while the body still fits along it: the replan decides.
+  std::unique_ptr<planner::PathFollower> margin_blocked_;
   std::optional<planner::Point2> goal_;
   /// A goal reached with its frontier still there: retired after the next map update.
   std::optional<planner::Point2> reached_goal_;

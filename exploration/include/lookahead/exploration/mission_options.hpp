@@ -50,7 +50,8 @@ struct MissionOptions {
   /// The robot's map counts a cell as explored (free) below this occupancy.
   double free_threshold = 0.35;
   /// Planning keeps this much more than the robot's radius from walls [m]: pure pursuit
-  /// cuts corners and the costmap's inflation is exact only to a cell.
+  /// cuts corners and the costmap's inflation is exact only to a cell. A path already
+  /// planned is kept while the body alone fits along it (Costmap::path_fits_body).
   double safety_margin = 0.08;
   /// A reactive stop: no forward motion while a laser end point lies in the robot's swept
   /// corridor within this distance ahead of its body [m] (walls the map has not caught up

@@ -11,6 +11,11 @@
 // anywhere inside a free cell may come up to one cell diagonal (7 cm at 5 cm cells) closer
 // to an occupied cell than `robot_radius`: give the radius that much slack when it matters.
 //
+// Part of the radius may be a safety margin (`safety_margin`): a cell then also knows whether
+// the body alone, robot_radius - safety_margin, fits there. Planning keeps the margin; a path
+// already planned stays valid while the body fits along it (path_fits_body), so a door the
+// margin closes and opens again with every scan does not throw the path away at each refresh.
+//
 // The raster covers the grid's known bounds plus `margin`; everything outside it is blocked.
 // Cells share the grid's indexing (same resolution and origin), so slam::CellIndex values of
 // the grid address the costmap too. The costmap is a snapshot: rebuild it when the map
@@ -36,6 +41,8 @@ struct CostmapOptions {
   double robot_radius = 0.25;
   /// Unknown border added around the known bounds [m], [0, 50]; useful with unknown_is_free.
   double margin = 0.5;
+  /// The part of robot_radius that is safety margin, not body [m], [0, robot_radius].
+  double safety_margin = 0.0;
 };
 
 /// Throws std::invalid_argument naming the field and value when an option is out of range.
@@ -80,6 +87,13 @@ class Costmap {
   /// Every segment of the path is free (a single waypoint: that cell is free).
   [[nodiscard]] bool path_is_free(const Path& path) const;
 
+  /// The body (robot_radius - safety_margin) fits in the cell: free, or closed by the
+  /// margin only. Cells outside the raster do not fit.
+  [[nodiscard]] bool cell_fits_body(slam::CellIndex c) const;
+  [[nodiscard]] bool fits_body(Point2 p) const { return cell_fits_body(cell_at(p)); }
+  /// As path_is_free, for the body alone.
+  [[nodiscard]] bool path_fits_body(const Path& path) const;
+
   [[nodiscard]] std::size_t free_cell_count() const;
 
  private:
@@ -88,6 +102,9 @@ class Costmap {
   }
   /// Blocked cells reach this many cells (the radius, rounded up, plus one).
   [[nodiscard]] int inflation_reach() const;
+  /// path_is_free / path_fits_body with the cell test `ok`.
+  template <typename CellOk>
+  [[nodiscard]] bool segment_passes(Point2 a, Point2 b, CellOk ok) const;
   /// Recomputes free_ over the raster rectangle [x0, x1] x [y0, y1] (local, inclusive).
   void inflate(const slam::OccupancyGrid& map, int x0, int y0, int x1, int y1);
   void mark_blocked_cells(const slam::OccupancyGrid& map, int x0, int y0, int w, int h,
@@ -99,7 +116,9 @@ class Costmap {
   slam::CellIndex known_lo_, known_hi_;  ///< the map's known bounds the raster was made for
   int width_ = 0;
   int height_ = 0;
-  std::vector<std::uint8_t> free_;  ///< 1 = free after inflation, row-major from origin_
+  /// Per cell, row-major from origin_: kFree, kBodyFits (the margin closes it) or kBlocked.
+  std::vector<std::uint8_t> free_;
+  static constexpr std::uint8_t kBlocked = 0, kBodyFits = 1, kFree = 2;
 };
 
 }  // namespace lookahead::planner

@@ -52,10 +52,12 @@ class PathFollower {
 
   [[nodiscard]] bool goal_reached() const { return goal_reached_; }
   /// The part of the path still ahead, from the robot's projection to the goal, is free on
-  /// this costmap. False means replan: new map data blocked it. A first stretch (up to
-  /// 0.5 m) leading from inside the inflated band out to free space is not checked: it is
-  /// the robot's way back out after cutting a corner, not a blocked path.
-  [[nodiscard]] bool path_still_valid(const Costmap& costmap) const;
+  /// this costmap (kPlanning: with the safety margin the plan kept; kBody: the body alone
+  /// fits, Costmap::path_fits_body). False means replan: new map data blocked it. A first
+  /// stretch (up to 0.5 m) leading from inside the inflated band out to free space is not
+  /// checked: it is the robot's way back out after cutting a corner, not a blocked path.
+  enum class Clearance { kPlanning, kBody };
+  [[nodiscard]] bool path_still_valid(const Costmap& costmap, Clearance clearance = Clearance::kPlanning) const;
 
   [[nodiscard]] const Path& path() const { return path_; }
   /// Index of the segment the robot's projection is on (segment i joins waypoints i, i+1).
