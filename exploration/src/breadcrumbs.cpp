@@ -50,7 +50,10 @@ class CrumbBuckets {
     return {static_cast<std::int64_t>(std::floor(p.x / Breadcrumbs::kLinkRadius)),
             static_cast<std::int64_t>(std::floor(p.y / Breadcrumbs::kLinkRadius))};
   }
-  static std::int64_t pack(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xffffffff); }
+  static std::int64_t pack(std::int64_t x, std::int64_t y) {
+    return static_cast<std::int64_t>((static_cast<std::uint64_t>(x) << 32) ^
+                                     (static_cast<std::uint64_t>(y) & 0xffffffff));
+  }
   static std::int64_t key(planner::Point2 p) {
     const auto [x, y] = cell(p);
     return pack(x, y);

@@ -30,7 +30,10 @@ int raw_at_least(double p) {
   return lo;
 }
 
-std::int64_t key(slam::CellIndex c) { return (static_cast<std::int64_t>(c.x) << 32) ^ static_cast<std::uint32_t>(c.y); }
+std::int64_t key(slam::CellIndex c) {
+  return static_cast<std::int64_t>((static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.x)) << 32) |
+                                   static_cast<std::uint32_t>(c.y));
+}
 
 }  // namespace
 

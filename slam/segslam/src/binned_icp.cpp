@@ -14,7 +14,8 @@ namespace {
 std::int64_t bin_key(double x, double y, double bin) {
   const auto ix = static_cast<std::int64_t>(std::floor(x / bin));
   const auto iy = static_cast<std::int64_t>(std::floor(y / bin));
-  return (ix << 32) ^ (iy & 0xffffffff);
+  return static_cast<std::int64_t>((static_cast<std::uint64_t>(ix) << 32) ^
+                                   (static_cast<std::uint64_t>(iy) & 0xffffffff));
 }
 
 // The target's points sorted into a dense grid of square cells (counting sort, so each

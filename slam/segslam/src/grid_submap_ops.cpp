@@ -34,7 +34,7 @@ Points2 obstacle_points(const OccupancyGrid& map) {
         if (!(t->flags[static_cast<std::size_t>(i)] & GridTile::kObstacle)) continue;
         double cx, cy;
         map.cell_center(
-            {(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)), (ty << GridTile::kBits) + (i >> GridTile::kBits)},
+            {GridTile::first_cell(tx) + (i & (GridTile::kSide - 1)), GridTile::first_cell(ty) + (i >> GridTile::kBits)},
             cx, cy);
         out.emplace_back(cx, cy);
       }
@@ -152,8 +152,8 @@ void add_child_evidence(OccupancyGrid& into, const OccupancyGrid& child) {
       for (int i = 0; i < GridTile::kCells; ++i) {
         const int l = t->log_odds[static_cast<std::size_t>(i)];
         if (l == GridTile::kUnknown) continue;
-        const CellIndex cell{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)),
-                             (ty << GridTile::kBits) + (i >> GridTile::kBits)};
+        const CellIndex cell{GridTile::first_cell(tx) + (i & (GridTile::kSide - 1)),
+                             GridTile::first_cell(ty) + (i >> GridTile::kBits)};
         if (into.is_known(cell)) continue;
         into.add_log_odds(cell, l);
       }
@@ -169,7 +169,10 @@ void MapCanvas::paste(const OccupancyGrid& map, const Pose2& frame, const Occupa
   // Rotated cells alias: average the cells of this submap that land in one target cell, so
   // the pasted evidence is not doubled (the sum across submaps is the independence model).
   std::unordered_map<std::int64_t, std::pair<double, int>> mine;
-  const auto key = [](int x, int y) { return (static_cast<std::int64_t>(x) << 32) ^ static_cast<std::uint32_t>(y); };
+  const auto key = [](int x, int y) {
+    return static_cast<std::int64_t>((static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) |
+                                     static_cast<std::uint32_t>(y));
+  };
   for (int ty = lo.y >> GridTile::kBits; ty <= hi.y >> GridTile::kBits; ++ty) {
     for (int tx = lo.x >> GridTile::kBits; tx <= hi.x >> GridTile::kBits; ++tx) {
       const GridTile* t = map.tile(tx, ty);
@@ -181,8 +184,8 @@ void MapCanvas::paste(const OccupancyGrid& map, const Pose2& frame, const Occupa
         if (l == GridTile::kUnknown) continue;
         const auto pl = shared ? shared->log_odds[static_cast<std::size_t>(i)] : GridTile::kUnknown;
         const double delta = (l - (pl == GridTile::kUnknown ? 0 : pl)) * scale;
-        const CellIndex cell{(tx << GridTile::kBits) + (i & (GridTile::kSide - 1)),
-                             (ty << GridTile::kBits) + (i >> GridTile::kBits)};
+        const CellIndex cell{GridTile::first_cell(tx) + (i & (GridTile::kSide - 1)),
+                             GridTile::first_cell(ty) + (i >> GridTile::kBits)};
         double x, y;
         map.cell_center(cell, x, y);
         const double wx = frame.x + c * x - s * y, wy = frame.y + s * x + c * y;

@@ -37,8 +37,8 @@ NearField::NearField(const OccupancyGrid& map, int max_dist2, const std::vector<
         if (!t) continue;
         for (int i = 0; i < GridTile::kCells; ++i) {
           if (t->dist2[static_cast<std::size_t>(i)] > max_dist2) continue;
-          const int x = (tx << GridTile::kBits) + (i & (GridTile::kSide - 1)) - base.x0;
-          const int y = (ty << GridTile::kBits) + (i >> GridTile::kBits) - base.y0;
+          const int x = GridTile::first_cell(tx) + (i & (GridTile::kSide - 1)) - base.x0;
+          const int y = GridTile::first_cell(ty) + (i >> GridTile::kBits) - base.y0;
           base.words[static_cast<std::size_t>(y) * base.row_words + static_cast<std::size_t>(x >> 6)] |=
               std::uint64_t{1} << (x & 63);
         }

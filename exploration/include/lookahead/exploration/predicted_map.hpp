@@ -56,7 +56,8 @@ class PredictedMap {
 
  private:
   static std::int64_t key(slam::CellIndex c) {
-    return (static_cast<std::int64_t>(c.x) << 32) ^ static_cast<std::uint32_t>(c.y);
+    return static_cast<std::int64_t>((static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.x)) << 32) |
+                                     static_cast<std::uint32_t>(c.y));
   }
   slam::OccupancyGrid cells_;
   std::unordered_map<std::int64_t, float> confidence_;

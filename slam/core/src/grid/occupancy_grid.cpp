@@ -75,7 +75,7 @@ bool OccupancyGrid::known_bounds(CellIndex& min, CellIndex& max) const {
   for (int iy = 0; iy < tiles_h_; ++iy) {
     for (int ix = 0; ix < tiles_w_; ++ix) {
       if (!tiles_[static_cast<std::size_t>(iy * tiles_w_ + ix)]) continue;
-      const CellIndex lo{(ix + tile_x0_) << GridTile::kBits, (iy + tile_y0_) << GridTile::kBits};
+      const CellIndex lo{GridTile::first_cell(ix + tile_x0_), GridTile::first_cell(iy + tile_y0_)};
       const CellIndex hi{lo.x + GridTile::kSide - 1, lo.y + GridTile::kSide - 1};
       if (!any) {
         min = lo;

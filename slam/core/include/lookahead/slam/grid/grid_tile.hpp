@@ -27,6 +27,9 @@ struct GridTile {
   }
 
   static constexpr int index(int local_x, int local_y) { return (local_y << kBits) | local_x; }
+  /// The lowest cell coordinate of tile coordinate `tile` (negative tiles too: a multiplication,
+  /// as a left shift of a negative value is undefined in C++17).
+  static constexpr int first_cell(int tile) { return tile * kSide; }
 
   std::array<std::int16_t, kCells> log_odds;
   std::array<std::uint8_t, kCells> dist2;

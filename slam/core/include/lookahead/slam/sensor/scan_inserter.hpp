@@ -54,7 +54,9 @@ void trace_cells(CellIndex from, CellIndex to, Visit&& visit) {
   const int major_step = (x_major ? dx : dy) < 0 ? -1 : 1;
   const std::int64_t minor_delta = x_major ? dy : dx;
   const std::int64_t slope = (minor_delta * (std::int64_t{1} << 32)) / n;
-  std::int64_t minor = (static_cast<std::int64_t>(x_major ? from.y : from.x) << 32) + (std::int64_t{1} << 31);
+  // A multiplication, not a shift: shifting a negative value left is undefined in C++17.
+  std::int64_t minor =
+      static_cast<std::int64_t>(x_major ? from.y : from.x) * (std::int64_t{1} << 32) + (std::int64_t{1} << 31);
   int major = x_major ? from.x : from.y;
   for (int k = 0; k <= n; ++k, major += major_step, minor += slope) {
     const int m = static_cast<int>(minor >> 32);
