@@ -15,8 +15,10 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <memory>
 
 #include "bag_frames.hpp"
+#include "bag_reindex.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/odometry_check.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
@@ -170,25 +172,35 @@ void read_scans(rosbag::Bag& bag, const ScanReadContext& c, LaserLog& log) {
   }
 }
 
-rosbag::Bag open_bag(const std::string& path) {
+// Opens `path`; a bag without an index (the recording was interrupted, or the file was cut)
+// is opened through a copy `rosbag reindex` rebuilds, kept alive in `copy`.
+void open_bag(const std::string& path, rosbag::Bag& bag, std::unique_ptr<ReindexedBag>& copy) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw ParseError(path, 0, "", "", "no such file (or not a regular file)");
   }
-  rosbag::Bag bag;
   try {
     bag.open(path, rosbag::bagmode::Read);
-  } catch (const rosbag::BagUnindexedException&) {
-    throw ParseError(path, 0, "index", "",
-                     "the bag has no index (recording interrupted or file truncated); "
-                     "`rosbag reindex` rebuilds it");
-  } catch (const std::exception& e) {
-    throw ParseError(path, 0, "bag", "",
-                     std::string("cannot open as a ROS1 bag (a truncated recording: `rosbag reindex` "
-                                 "rebuilds it): ") +
-                         e.what());
+    return;
+  } catch (const std::exception&) {
+    // Unindexed (BagUnindexedException) or cut inside the index: both are what reindex mends.
+    bag.close();  // a failed open leaves the file open
   }
-  return bag;
+  copy = std::make_unique<ReindexedBag>(path);
+  try {
+    bag.open(copy->path(), rosbag::bagmode::Read);
+  } catch (const std::exception& e) {
+    throw ParseError(path, 0, "bag", "", std::string("cannot open even after `rosbag reindex`: ") + e.what());
+  }
+}
+
+std::string salvage_note(const std::string& path, const LaserLog& log) {
+  const double end = log.scans.empty() ? 0.0 : log.scans.back().timestamp;
+  return fmt::format(
+      "{}: the bag has no index (recording interrupted or file truncated); read through a copy "
+      "`rosbag reindex` rebuilt: the {} scans up to t = {:.3f} s are kept, the messages of the last, "
+      "partial chunk are lost",
+      path, log.scans.size(), end);
 }
 
 }  // namespace
@@ -196,9 +208,16 @@ rosbag::Bag open_bag(const std::string& path) {
 LaserLog read_ros_bag(const std::string& path, const LogReadOptions& options) {
   LaserLog log;
   log.path = path;
-  rosbag::Bag bag = open_bag(path);
+  rosbag::Bag bag;
+  std::unique_ptr<ReindexedBag> reindexed;
+  open_bag(path, bag, reindexed);
   try {
     const Topics topics = list_topics(bag);
+    if (reindexed && topics.all.empty()) {
+      throw ParseError(path, 0, "index", "",
+                       "the bag has no index (recording interrupted or file truncated, or not a bag) and "
+                       "`rosbag reindex` found no complete chunk of messages in it");
+    }
     log.messages = topics.all;
     log.scan_source = choose_scan_topic(path, topics, options.bag);
     const std::string odom_topic = choose_odom_topic(path, topics, options.bag);
@@ -215,6 +234,10 @@ LaserLog read_ros_bag(const std::string& path, const LogReadOptions& options) {
     // was fine, the data behind it is not.
     if (log.scans.empty()) throw ParseError(path, 0, "bag", "", std::string("cannot read: ") + e.what());
     log.stopped_early = fmt::format("{}: reading stopped after {} scans: {}", path, log.scans.size(), e.what());
+  }
+  if (reindexed) {
+    const std::string note = salvage_note(path, log);
+    log.stopped_early = log.stopped_early.empty() ? note : note + "; " + log.stopped_early;
   }
   log.lines_read = 0;
   for (const auto& m : log.messages) log.lines_read += m.count;
