@@ -257,14 +257,12 @@ bool Mission::goal_predicted() const {
   // A goal chosen because every frontier left was predicted is there to observe it.
   if (!lookahead_ || !goal_ || !strategy_->uses_prediction() || visiting_predicted_) return false;
   const slam::OccupancyGrid& m = map();
-  for (const FrontierCluster& f : frontiers_.clusters(m)) {
-    if (!f.has_goal || std::hypot(f.goal_x - goal_->x, f.goal_y - goal_->y) > kSameGoalRadius) continue;
-    const bool covered = lookahead_->predicted().covered_share(m, f, skip_rule()) >= options_.lookahead.skip_share;
-    if (covered)
-      spdlog::debug("t {:.1f}: goal ({:.2f}, {:.2f}) dropped: predicted on the way", time_, goal_->x, goal_->y);
-    return covered;
-  }
-  return false;
+  const auto covered = [&](const FrontierCluster& f) {
+    return lookahead_->predicted().covered_share(m, f, skip_rule()) >= options_.lookahead.skip_share;
+  };
+  if (!goal_serves_only_predicted(frontiers_.clusters(m), goal_->x, goal_->y, kSameGoalRadius, covered)) return false;
+  spdlog::debug("t {:.1f}: goal ({:.2f}, {:.2f}) dropped: predicted on the way", time_, goal_->x, goal_->y);
+  return true;
 }
 
 SelectionInputs Mission::selection_inputs() {

@@ -74,4 +74,15 @@ TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clus
   return targets;
 }
 
+bool goal_serves_only_predicted(const std::vector<FrontierCluster>& clusters, double x, double y, double radius,
+                                const std::function<bool(const FrontierCluster&)>& covered) {
+  bool any = false;
+  for (const FrontierCluster& f : clusters) {
+    if (!f.has_goal || std::hypot(f.goal_x - x, f.goal_y - y) > radius) continue;
+    if (!covered(f)) return false;
+    any = true;
+  }
+  return any;
+}
+
 }  // namespace lookahead::exploration

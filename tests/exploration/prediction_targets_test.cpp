@@ -34,6 +34,19 @@ TEST(PredictionTargets, ASelectionPredictsItsGoalThenTheNearestOtherFrontiers) {
   EXPECT_EQ(t[2], std::make_pair(2.0, 0.0));  // (5.5 is the goal's own frontier: within 1 m)
 }
 
+// Two frontiers share a goal spot and only one is predicted: dropping the goal would have the
+// next selection choose the same spot for the other one, at every check.
+TEST(PredictionTargets, AGoalIsDroppedOnlyWhenEveryFrontierAtItsSpotIsPredicted) {
+  std::vector<FrontierCluster> clusters{goal_at(5, 0), goal_at(5.3, 0.2), goal_at(9, 0)};
+  clusters[0].centroid_x = 1;  // marks the predicted one
+  const auto covered = [](const FrontierCluster& f) { return f.centroid_x == 1; };
+  EXPECT_FALSE(goal_serves_only_predicted(clusters, 5, 0, 1.0, covered));
+  clusters[1].centroid_x = 1;
+  EXPECT_TRUE(goal_serves_only_predicted(clusters, 5, 0, 1.0, covered));
+  EXPECT_FALSE(goal_serves_only_predicted(clusters, 9, 0, 1.0, covered));   // its frontier is open
+  EXPECT_FALSE(goal_serves_only_predicted(clusters, 20, 0, 1.0, covered));  // no frontier there
+}
+
 // A frontier along x = 0 facing +x, its goal at (-0.5, 0.5).
 FrontierCluster wall_frontier(slam::OccupancyGrid& map, int x0) {
   FrontierCluster f = goal_at(x0 * 0.05 - 0.5, 0.5);

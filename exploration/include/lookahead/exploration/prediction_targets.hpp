@@ -49,4 +49,11 @@ TargetList unpredicted_frontier_targets(const std::vector<FrontierCluster>& clus
                                         const PredictionAttempts& tried, double now, const GoalDistance& distance,
                                         int count);
 
+/// Whether a goal on the way serves only predicted frontiers: there is a frontier whose goal
+/// lies within `radius` of (x, y), and every such frontier is `covered`. Frontiers can share
+/// a goal spot; one of them left open keeps the goal, or the next selection would choose the
+/// same spot again for it.
+bool goal_serves_only_predicted(const std::vector<FrontierCluster>& clusters, double x, double y, double radius,
+                                const std::function<bool(const FrontierCluster&)>& covered);
+
 }  // namespace lookahead::exploration
