@@ -20,8 +20,8 @@ namespace fs = std::filesystem;
 
 fs::path fresh_folder() {
   static std::atomic<int> counter{0};
-  const fs::path dir = fs::temp_directory_path() /
-                       ("lookahead-reindex-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  const fs::path dir =
+      fs::temp_directory_path() / ("lookahead-reindex-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
