@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 
@@ -198,25 +199,32 @@ TEST(RosBagReader, OdometryEndingEarlyKeepsTheScansBeforeAndNamesTheTime) {
   EXPECT_NE(log.stopped_early.find("/tf odom -> base_link"), std::string::npos) << log.stopped_early;
 }
 
-// rosbag writes a bag's index when it closes it: a recording cut short has none. The
-// scans of its complete chunks are read through a copy `rosbag reindex` rebuilds.
-TEST(RosBagReader, ATruncatedBagKeepsTheScansOfItsCompleteChunks) {
-  TempPath path(".bag");
-  constexpr int kScans = 2000;  // 360 beams each: about four of rosbag's 768 KB chunks
+// A bag of `scans` scans of 360 beams (about four of rosbag's 768 KB chunks for 2000), cut
+// at 2/3 of its size as an interrupted recording would leave it; returns the cut size.
+std::uintmax_t write_cut_bag(const std::string& path, int scans) {
   {
-    RosBagWriter writer(path.str());
+    RosBagWriter writer(path);
     LaserScan s;
     s.ranges.assign(360, 2.0f);
     s.angle_increment = 0.01;
-    for (int i = 0; i < kScans; ++i) {
+    for (int i = 0; i < scans; ++i) {
       s.timestamp = i * 0.1;
       writer.odometry(s.timestamp, {0.01 * i, 0, 0});
       writer.scan(s);
     }
     writer.close();
   }
-  const auto cut = std::filesystem::file_size(path.str()) * 2 / 3;
-  std::filesystem::resize_file(path.str(), cut);
+  const auto cut = std::filesystem::file_size(path) * 2 / 3;
+  std::filesystem::resize_file(path, cut);
+  return cut;
+}
+
+// rosbag writes a bag's index when it closes it: a recording cut short has none. The
+// scans of its complete chunks are read through a copy `rosbag reindex` rebuilds.
+TEST(RosBagReader, ATruncatedBagKeepsTheScansOfItsCompleteChunks) {
+  TempPath path(".bag");
+  constexpr int kScans = 2000;
+  const auto cut = write_cut_bag(path.str(), kScans);
   const LaserLog log = read_ros_bag(path.str());
   EXPECT_GT(log.scans.size(), kScans / 4u);
   EXPECT_LT(log.scans.size(), kScans * 2u / 3u);
@@ -227,6 +235,17 @@ TEST(RosBagReader, ATruncatedBagKeepsTheScansOfItsCompleteChunks) {
     ASSERT_NEAR(log.scans[i].odometry.x, 0.01 * static_cast<double>(i), 1e-9);
   }
   EXPECT_EQ(std::filesystem::file_size(path.str()), cut);  // the user's file is not touched
+}
+
+TEST(RosBagReader, WithoutRosbagReindexATruncatedBagNamesThePackage) {
+  TempPath path(".bag");
+  write_cut_bag(path.str(), 200);
+  const std::string saved = std::getenv("PATH") ? std::getenv("PATH") : "";
+  ::setenv("PATH", "/nonexistent", 1);  // no `rosbag` to be found
+  const std::string e = error_of(path.str());
+  ::setenv("PATH", saved.c_str(), 1);
+  EXPECT_NE(e.find(path.str()), std::string::npos) << e;
+  EXPECT_NE(e.find("python3-rosbag"), std::string::npos) << e;
 }
 
 TEST(RosBagReader, FilesThatAreNoBagAreParseErrors) {
