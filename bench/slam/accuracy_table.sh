@@ -8,7 +8,8 @@
 # (bench/slam/reference_error.py), wall and CPU (user + sys) seconds and peak memory (GNU time).
 # Usage: bench/slam/accuracy_table.sh [BUILD_DIR=build] [OUT=out/accuracy_table]
 # env: SEEDS (default 1..10), MRPT_SEEDS (default: SEEDS; "" skips MRPT), PARTICLES (30),
-#      THREADS (lookahead worker threads, default 1), JOBS (runs at once, default 1).
+#      THREADS (lookahead worker threads, default 1), JOBS (runs at once, default 1),
+#      CONFIG (a lookahead slam YAML relative to the repository, default: config/slam/default.yaml, the code's defaults).
 # Writes OUT/report.md (commit, date, CPU, configuration, the table, mean and worst seed).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -20,6 +21,7 @@ MRPT_SEEDS=${MRPT_SEEDS-$SEEDS}
 PARTICLES=${PARTICLES:-30}
 THREADS=${THREADS:-1}
 JOBS=${JOBS:-1}
+CONFIG=${CONFIG:-config/slam/default.yaml}
 LA=$BUILD/lookahead
 ONE_LOOP="/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"
 [[ -x $LA ]] || { echo "build first: cmake --build $BUILD --target lookahead carmen_to_rawlog" >&2; exit 1; }
@@ -42,7 +44,7 @@ run_one() {  # run_one SYSTEM NAME LOG REF SEED
   mkdir -p "$dir"
   if [[ $sys == lookahead ]]; then
     /usr/bin/time -f "%e %U %S %M" -o "$dir/time.txt" "$LA" slam "$log" --out "$dir" \
-      --particles "$PARTICLES" --seed "$seed" --threads "$THREADS" > "$dir/console.txt" 2>&1 ||
+      --config "$CONFIG" --particles "$PARTICLES" --seed "$seed" --threads "$THREADS" > "$dir/console.txt" 2>&1 ||
       { echo "FAILED: lookahead on $log seed $seed, see $dir/console.txt" >&2; return 0; }
   elif [[ $log == *.rawlog ]]; then  # rbpf-slam reads the rawlog itself; no trajectory kept
     sed -e "s#@OUT_DIR@#$dir/mrpt#" -e "s#@PARTICLES@#$PARTICLES#" -e "s#@SEED@#$seed#" \
@@ -61,7 +63,7 @@ run_one() {  # run_one SYSTEM NAME LOG REF SEED
   echo "$name $sys $seed $err $wall $(awk "BEGIN{print $user + $sys_s}") $((kb / 1024))" > "$dir/row.txt"
 }
 export -f run_one
-export OUT LA PARTICLES THREADS
+export OUT LA PARTICLES THREADS CONFIG
 
 for entry in "${LOGS[@]}"; do
   IFS=: read -r name log ref <<< "$entry"
@@ -77,7 +79,7 @@ done | xargs -0 -n5 -P"$JOBS" bash -c 'run_one "$@"' _
        "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores," \
        "load $(cut -d' ' -f1-3 /proc/loadavg); lookahead threads $THREADS, runs at once $JOBS"
   echo
-  echo "lookahead: config/slam/default.yaml with --particles $PARTICLES --seed S --threads $THREADS;" \
+  echo "lookahead: $CONFIG with --particles $PARTICLES --seed S --threads $THREADS;" \
        "MRPT: rbpf-slam (mrpt-apps $(dpkg-query -W -f='${Version}' mrpt-apps 2>/dev/null || echo '?'))," \
        "bench/mrpt/rbpf_slam_gridmap.ini (optimal sampling)."
   echo "References are GMapping outputs (fr101.carmen.gfs.log, csail.corrected.log), not ground truth;" \
