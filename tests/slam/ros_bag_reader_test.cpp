@@ -10,8 +10,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 
 #include "lookahead/slam/io/laser_log.hpp"
@@ -197,6 +200,38 @@ TEST(RosBagReader, OdometryEndingEarlyKeepsTheScansBeforeAndNamesTheTime) {
   EXPECT_EQ(log.scans_without_odometry, 1u);
   EXPECT_NE(log.stopped_early.find("t = 3.500000"), std::string::npos) << log.stopped_early;
   EXPECT_NE(log.stopped_early.find("/tf odom -> base_link"), std::string::npos) << log.stopped_early;
+}
+
+// ROS's deserialiser would resize `ranges` to a corrupted length (8 GB here) before reading
+// it: the length is checked against the message first, and the scans before it are kept.
+TEST(RosBagReader, AScanWithACorruptedArrayLengthStopsTheReadingAndNamesTheArray) {
+  TempPath path(".bag");
+  constexpr float kMarker = 7.25f;  // the first range of scan 5 only
+  {
+    rosbag::Bag bag(path.str(), rosbag::bagmode::Write);
+    write_robot(bag, 6);
+    for (int i = 0; i < 10; ++i) {
+      sensor_msgs::LaserScan m = laser_message(0.5 * i);
+      if (i == 5) m.ranges[0] = kMarker;
+      bag.write("/scan", std::max(ros::Time(0.5 * i), ros::TIME_MIN), m);
+    }
+  }
+  std::ifstream in(path.str(), std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  in.close();
+  const std::uint32_t five = 5;
+  std::string pattern(reinterpret_cast<const char*>(&five), 4);
+  pattern.append(reinterpret_cast<const char*>(&kMarker), 4);
+  const std::size_t at = bytes.find(pattern);
+  ASSERT_NE(at, std::string::npos);
+  const std::uint32_t corrupt = 0x7ffffff0u;
+  bytes.replace(at, 4, reinterpret_cast<const char*>(&corrupt), 4);
+  path.write(bytes);
+
+  const LaserLog log = read_ros_bag(path.str());
+  EXPECT_EQ(log.scans.size(), 5u);
+  EXPECT_NE(log.stopped_early.find("ranges declares 2147483632 x 4 bytes"), std::string::npos) << log.stopped_early;
+  EXPECT_NE(log.stopped_early.find("t = 2.500000 s on /scan"), std::string::npos) << log.stopped_early;
 }
 
 // A bag of `scans` scans of 360 beams (about four of rosbag's 768 KB chunks for 2000), cut

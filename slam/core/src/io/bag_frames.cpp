@@ -11,6 +11,7 @@
 #include <cmath>
 #include <set>
 
+#include "bag_message.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
 
 namespace lookahead::slam {
@@ -40,6 +41,8 @@ BagFrames odometry_from_topic(rosbag::Bag& bag, const std::string& topic, const 
   f.base_frame = bare(o.base_frame);
   rosbag::View view(bag, rosbag::TopicQuery(topic));
   for (const rosbag::MessageInstance& mi : view) {
+    // No variable-length array in an Odometry message: its strings ROS checks before it
+    // allocates, so the generated deserialiser is safe on corrupt bytes.
     const auto m = mi.instantiate<nav_msgs::Odometry>();
     if (!m) continue;
     if (f.base_frame.empty()) f.base_frame = bare(m->child_frame_id);
@@ -55,7 +58,7 @@ std::set<std::string> frame_pairs(rosbag::Bag& bag) {
   std::set<std::string> pairs;
   rosbag::View view(bag, rosbag::TopicQuery(std::vector<std::string>{"/tf", "/tf_static"}));
   for (const rosbag::MessageInstance& mi : view) {
-    const auto m = mi.instantiate<tf2_msgs::TFMessage>();
+    const auto m = read_tf_message(mi);
     if (!m) continue;
     for (const auto& tr : m->transforms) pairs.insert(bare(tr.header.frame_id) + " -> " + bare(tr.child_frame_id));
   }
@@ -73,7 +76,7 @@ std::string only_child(rosbag::Bag& bag, const std::string& parent) {
   std::set<std::string> children;
   rosbag::View view(bag, rosbag::TopicQuery("/tf"));
   for (const rosbag::MessageInstance& mi : view) {
-    const auto m = mi.instantiate<tf2_msgs::TFMessage>();
+    const auto m = read_tf_message(mi);
     if (!m) continue;
     for (const auto& tr : m->transforms) {
       if (bare(tr.header.frame_id) == parent) children.insert(bare(tr.child_frame_id));
@@ -89,7 +92,7 @@ BagFrames odometry_from_tf(rosbag::Bag& bag, const std::string& path, const BagR
   f.odometry_name = "/tf " + odom + " -> " + (f.base_frame.empty() ? "?" : f.base_frame);
   rosbag::View view(bag, rosbag::TopicQuery("/tf"));
   for (const rosbag::MessageInstance& mi : view) {
-    const auto m = mi.instantiate<tf2_msgs::TFMessage>();
+    const auto m = read_tf_message(mi);
     if (!m) continue;
     for (const auto& tr : m->transforms) {
       if (bare(tr.header.frame_id) != odom || bare(tr.child_frame_id) != f.base_frame) continue;
@@ -118,7 +121,7 @@ BagFrames read_frames(rosbag::Bag& bag, const std::string& path, const std::stri
 std::string first_scan_frame(rosbag::Bag& bag, const std::string& scan_topic) {
   rosbag::View view(bag, rosbag::TopicQuery(scan_topic));
   for (const rosbag::MessageInstance& mi : view) {
-    const auto m = mi.instantiate<sensor_msgs::LaserScan>();
+    const auto m = read_scan_message(mi);
     if (m) return bare(m->header.frame_id);
   }
   return "";
@@ -132,7 +135,7 @@ Pose2 laser_mounting(rosbag::Bag& bag, const std::string& path, const std::strin
   for (const char* topic : {"/tf_static", "/tf"}) {
     rosbag::View view(bag, rosbag::TopicQuery(topic));
     for (const rosbag::MessageInstance& mi : view) {
-      const auto m = mi.instantiate<tf2_msgs::TFMessage>();
+      const auto m = read_tf_message(mi);
       if (!m) continue;
       for (const auto& tr : m->transforms) {
         if (bare(tr.header.frame_id) == base_frame && bare(tr.child_frame_id) == laser) {

@@ -18,6 +18,7 @@
 #include <memory>
 
 #include "bag_frames.hpp"
+#include "bag_message.hpp"
 #include "bag_reindex.hpp"
 #include "lookahead/slam/io/laser_log.hpp"
 #include "lookahead/slam/io/odometry_check.hpp"
@@ -150,7 +151,7 @@ void read_scans(rosbag::Bag& bag, const ScanReadContext& c, LaserLog& log) {
   std::size_t index = 0;
   for (const rosbag::MessageInstance& mi : view) {
     ++index;
-    const auto m = mi.instantiate<sensor_msgs::LaserScan>();
+    const auto m = read_scan_message(mi);
     if (!m) continue;
     const double t = m->header.stamp.isZero() ? mi.getTime().toSec() : m->header.stamp.toSec();
     if (!covered(c.odometry, t, c.options.bag.max_odometry_gap)) {
