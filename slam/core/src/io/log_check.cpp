@@ -29,7 +29,7 @@ void check_timing(LogCheck& c, const LaserLog& log, const LogCheckOptions& o) {
     c.median_period = periods[periods.size() / 2];
   }
   c.gap_threshold = std::min(o.max_gap, std::max(o.min_gap, o.gap_factor * c.median_period));
-  std::sort(gaps.begin(), gaps.end(), [](const ScanGap& a, const ScanGap& b) { return a.seconds > b.seconds; });
+  std::stable_sort(gaps.begin(), gaps.end(), [](const ScanGap& a, const ScanGap& b) { return a.seconds > b.seconds; });
   for (const ScanGap& g : gaps) c.long_gaps += g.seconds > c.gap_threshold;
   gaps.resize(std::min<std::size_t>(gaps.size(), 3));
   c.largest_gaps = gaps;

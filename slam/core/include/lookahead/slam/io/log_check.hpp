@@ -54,7 +54,7 @@ struct LogCheck {
   std::size_t scans = 0;
   double first_stamp = 0.0, last_stamp = 0.0;
   double median_period = 0.0;         ///< [s]
-  std::vector<ScanGap> largest_gaps;  ///< up to three, longest first
+  std::vector<ScanGap> largest_gaps;  ///< up to three, longest first, equal ones in time order
   std::size_t long_gaps = 0;          ///< gaps over the threshold
   double gap_threshold = 0.0;         ///< [s]
   std::size_t time_backwards = 0;
