@@ -283,6 +283,19 @@ TEST(RosBagReader, WithoutRosbagReindexATruncatedBagNamesThePackage) {
   EXPECT_NE(e.find("python3-rosbag"), std::string::npos) << e;
 }
 
+// The reindexed copy is as large as the bag; /proc is a file system with no room at all.
+TEST(RosBagReader, ATruncatedBagIsRefusedUpFrontWhenTheTemporaryFolderHasNoRoomForItsCopy) {
+  TempPath path(".bag");
+  write_cut_bag(path.str(), 200);
+  const std::string saved = std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "";
+  ::setenv("TMPDIR", "/proc", 1);
+  const std::string e = error_of(path.str());
+  saved.empty() ? ::unsetenv("TMPDIR") : ::setenv("TMPDIR", saved.c_str(), 1);
+  EXPECT_NE(e.find(path.str()), std::string::npos) << e;
+  EXPECT_NE(e.find("/proc has 0.0 MB free"), std::string::npos) << e;
+  EXPECT_NE(e.find("TMPDIR"), std::string::npos) << e;
+}
+
 TEST(RosBagReader, FilesThatAreNoBagAreParseErrors) {
   test::TempPath garbage(".bag");
   garbage.write("#ROSBAG V2.0\nnot a bag at all");

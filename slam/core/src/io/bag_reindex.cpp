@@ -2,11 +2,13 @@
 #include "bag_reindex.hpp"
 
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <vector>
@@ -17,6 +19,25 @@ namespace lookahead::slam {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr std::uintmax_t kRoomMargin = 16u << 20;  // the index and the tool's own files
+
+// The copy is as large as the bag: a temporary folder without room for it is refused before
+// the tool starts, not when the disk fills under it.
+void check_room(const std::string& path) {
+  std::error_code ec;
+  const fs::path tmp = fs::temp_directory_path(ec);
+  const std::uintmax_t need = fs::file_size(path, ec);
+  if (ec) return;  // the open that follows names what is wrong with the file
+  const fs::space_info room = fs::space(tmp, ec);
+  if (ec || room.available >= need + kRoomMargin) return;
+  throw ParseError(
+      path, 0, "index", "",
+      fmt::format("the bag has no index (recording interrupted or file truncated); reading it needs a "
+                  "copy `rosbag reindex` rebuilds, {:.1f} MB, and the temporary folder {} has {:.1f} MB "
+                  "free: point TMPDIR at a folder with room",
+                  static_cast<double>(need) / 1e6, tmp.string(), static_cast<double>(room.available) / 1e6));
+}
 
 fs::path fresh_folder() {
   static std::atomic<int> counter{0};
@@ -61,6 +82,7 @@ std::string last_line(const fs::path& file) {
 }  // namespace
 
 ReindexedBag::ReindexedBag(const std::string& path) {
+  check_room(path);
   const fs::path dir = fresh_folder();
   folder_ = dir.string();
   const fs::path output = dir / "reindex.out";
