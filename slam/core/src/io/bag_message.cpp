@@ -38,14 +38,14 @@ class LengthCheck {
   }
   void string(const char* field) { skip(length(field), field); }
   void array(const char* field, std::uint64_t element_bytes) {
-    const std::uint64_t n = length(field);
-    if (n * element_bytes > left()) fail(field, n, element_bytes);
-    at_ += n * element_bytes;
+    at_ += array_head(field, element_bytes) * element_bytes;
   }
-  /// An array whose elements are at least `min_element_bytes` each; its elements are not walked.
-  void array_head(const char* field, std::uint64_t min_element_bytes) {
+  /// The length of an array whose elements are at least `min_element_bytes` each, checked;
+  /// its elements are not walked.
+  std::uint64_t array_head(const char* field, std::uint64_t min_element_bytes) {
     const std::uint64_t n = length(field);
     if (n * min_element_bytes > left()) fail(field, n, min_element_bytes);
+    return n;
   }
   void header() {
     skip(3 * 4, "header");  // seq, stamp
