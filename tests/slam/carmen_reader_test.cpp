@@ -41,6 +41,29 @@ TEST(CarmenReader, FlaserBeamGeometryFollowsTheBeamCount) {
   }
 }
 
+TEST(CarmenReader, FlaserFieldOfViewParamIsReadInRadiansOrDegrees) {
+  for (const std::string& fov : {"3.14159", "180"}) {
+    const LaserScan s = read_text("PARAM laser_front_laser_fov " + fov + " h 0\n" + flaser(181, 5.0)).scans.at(0);
+    EXPECT_NEAR(s.angle_increment * 180 / M_PI, 1.0, 1e-4) << fov;
+    EXPECT_NEAR(s.angle_min * 180 / M_PI, -90.0, 1e-3) << fov;
+  }
+  const LaserScan wide = read_text("PARAM laser_front_laser_fov 4.71239 h 0\n" + flaser(271, 5.0)).scans.at(0);
+  EXPECT_NEAR(wide.angle_min * 180 / M_PI, -135.0, 1e-3);
+}
+
+TEST(CarmenReader, AFieldOfViewBeyondAFullTurnNamesLineAndValue) {
+  for (const std::string& fov : {"720", "-1", "0"}) {
+    try {
+      read_text(flaser(180, 1.0) + "PARAM laser_front_laser_fov " + fov + " h 0\n" + flaser(180, 2.0));
+      FAIL() << "no error for " << fov;
+    } catch (const ParseError& e) {
+      EXPECT_EQ(e.line(), 2u);
+      EXPECT_EQ(e.field(), "laser_front_laser_fov");
+      EXPECT_EQ(e.value(), fov);
+    }
+  }
+}
+
 TEST(CarmenReader, FlaserCarriesTimesOdometryAndLaserOffset) {
   const LaserScan s = read_text(flaser(180, 1234.5)).scans.at(0);
   EXPECT_DOUBLE_EQ(s.timestamp, 1234.5);

@@ -146,12 +146,22 @@ void parse_odom(const Fields& f, ReaderState& s) {
   s.odometry.push_back({ipc_time(f), {f.number(1, "x"), f.number(2, "y"), normalize_angle(f.number(3, "theta"))}});
 }
 
+// Logs print the field of view in radians (the MIT CSAIL log: 3.14159); a carmen.ini gives
+// it in degrees (180). No laser sees more than a turn, so the two ranges cannot be confused.
+double laser_fov_radians(const Fields& f, double v) {
+  if (v > 0 && v <= 2 * M_PI) return v;
+  if (v > 2 * M_PI && v <= 360) return v * M_PI / 180.0;
+  f.fail("laser_front_laser_fov", f.token(2), "not a field of view: (0, 6.2832] rad or (6.2832, 360] deg");
+}
+
 void parse_param(const Fields& f, ReaderState& s) {
   f.require(3, "PARAM fields");
   const std::string name(f.token(1));
   double v = 0.0;
   const std::string_view t = f.token(2);
-  if (std::from_chars(t.data(), t.data() + t.size(), v).ec == std::errc()) s.params[name] = v;
+  if (std::from_chars(t.data(), t.data() + t.size(), v).ec != std::errc()) return;
+  if (name == "laser_front_laser_fov") v = laser_fov_radians(f, v);
+  s.params[name] = v;
 }
 
 void parse_line(const Fields& f, ReaderState& s, const LogReadOptions& o) {
