@@ -52,7 +52,7 @@ TEST(CarmenReader, FlaserFieldOfViewParamIsReadInRadiansOrDegrees) {
 }
 
 TEST(CarmenReader, AFieldOfViewBeyondAFullTurnNamesLineAndValue) {
-  for (const std::string& fov : {"720", "-1", "0"}) {
+  for (const std::string& fov : {"720", "-1", "0", "wide", "3.1x"}) {
     try {
       read_text(flaser(180, 1.0) + "PARAM laser_front_laser_fov " + fov + " h 0\n" + flaser(180, 2.0));
       FAIL() << "no error for " << fov;

@@ -157,11 +157,13 @@ double laser_fov_radians(const Fields& f, double v) {
 void parse_param(const Fields& f, ReaderState& s) {
   f.require(3, "PARAM fields");
   const std::string name(f.token(1));
+  if (name == "laser_front_laser_fov") {  // the one PARAM that must be a number: it sets the geometry
+    s.params[name] = laser_fov_radians(f, f.number(2, "laser_front_laser_fov"));
+    return;
+  }
   double v = 0.0;
   const std::string_view t = f.token(2);
-  if (std::from_chars(t.data(), t.data() + t.size(), v).ec != std::errc()) return;
-  if (name == "laser_front_laser_fov") v = laser_fov_radians(f, v);
-  s.params[name] = v;
+  if (std::from_chars(t.data(), t.data() + t.size(), v).ec == std::errc()) s.params[name] = v;
 }
 
 void parse_line(const Fields& f, ReaderState& s, const LogReadOptions& o) {
