@@ -125,8 +125,9 @@ Run add_explore_command(CLI::App& app) {
   app.add_option("--threads", a->threads, "RBPF worker threads, 0 = all cores (default: slam.filter.threads)");
   app.add_option("--start", a->start, "start pose x y theta (default: the world's)")->expected(3);
   app.add_option("--strategy", a->strategy,
-                 "nearest | utility | advantage | predictive | predictive-utility | predictive-advantage "
-                 "(predictive-*: P-SLAM, skip predicted frontiers)");
+                 "nearest | utility | advantage | rate | predictive-rate | predictive | predictive-utility | "
+                 "predictive-advantage (predictive-rate: gain seen through P-SLAM's predicted walls; the "
+                 "other predictive-*: P-SLAM, skip predicted frontiers)");
   app.add_flag("--predict", a->predict, "P-SLAM: predict at each target and use hypotheses in the particle weights");
   app.add_option("--pose", a->pose, "slam (RBPF in the loop) | truth (planner-only); default slam");
   app.add_option(

@@ -54,14 +54,22 @@ void run(benchmark::State& state, Gain gain) {
   double sum = 0;
   for (auto _ : state) {
     const auto& [x, y] = h.goals[i++ % h.goals.size()];
-    benchmark::DoNotOptimize(sum += gain(h.map, x, y, range, nullptr));
+    benchmark::DoNotOptimize(sum += gain(h.map, x, y, range));
   }
   state.counters["goals/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["mean_gain_m2"] = sum / static_cast<double>(state.iterations());
 }
 
-void BM_GainDisc(benchmark::State& state) { run(state, lookahead::exploration::information_gain); }
-void BM_GainLineOfSight(benchmark::State& state) { run(state, lookahead::exploration::visible_information_gain); }
+void BM_GainDisc(benchmark::State& state) {
+  run(state, [](const auto& map, double x, double y, double r) {
+    return lookahead::exploration::information_gain(map, x, y, r);
+  });
+}
+void BM_GainLineOfSight(benchmark::State& state) {
+  run(state, [](const auto& map, double x, double y, double r) {
+    return lookahead::exploration::visible_information_gain(map, x, y, r);
+  });
+}
 BENCHMARK(BM_GainDisc)->Arg(8)->Arg(12);
 BENCHMARK(BM_GainLineOfSight)->Arg(8)->Arg(12);
 

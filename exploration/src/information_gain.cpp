@@ -16,7 +16,7 @@ bool unknown(const slam::OccupancyGrid& grid, slam::CellIndex c, const CountsAsK
 }  // namespace
 
 double visible_information_gain(const slam::OccupancyGrid& grid, double x, double y, double range,
-                                const CountsAsKnown& counts_as_known) {
+                                const CountsAsKnown& counts_as_known, const Occludes& occludes) {
   const double res = grid.resolution();
   // Rays about 0.2 m apart at the full range: a ranking needs no finer fan, and the cost is
   // that of the disc's 10 cm lattice (each ray stops at the first wall).
@@ -34,7 +34,7 @@ double visible_information_gain(const slam::OccupancyGrid& grid, double x, doubl
     int i = 0;
     double ray_area = 0.0;
     slam::trace_segment(gx, gy, gx + c * range / res, gy + s * range / res, [&](slam::CellIndex cell) {
-      if (grid.is_obstacle(cell)) return false;  // occluded from here on
+      if (grid.is_obstacle(cell) || (occludes && occludes(cell))) return false;  // occluded from here on
       const double r0 = std::min(i * step, range), r1 = std::min((i + 1) * step, range);
       if (unknown(grid, cell, counts_as_known)) ray_area += 0.5 * (r1 * r1 - r0 * r0);
       ++i;

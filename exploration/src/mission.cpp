@@ -67,7 +67,8 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       blacklist_(options.blacklist),
       replan_failures_(options.blacklist),
       stuck_clock_({options.stuck_time, false, options.detour_progress}),
-      strategy_(make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share)),
+      strategy_(
+          make_strategy(options.strategy, options.utility_lambda, options.lookahead.skip_share, options.rate_offset)),
       // A spot is the same target within 1 m (the goal shifts as the map grows, as kSameGoalRadius).
       predicted_targets_({kSameGoalRadius, options.lookahead.repredict_after,
                           options.lookahead.predictor.surroundings_diameter, options.lookahead.repredict_growth}),
@@ -255,7 +256,7 @@ bool Mission::goal_predicted() const {
   // so it arrives after the choice) may cover the frontier the robot is driving to. The
   // strategy would skip it now; driving on would map what is already predicted.
   // A goal chosen because every frontier left was predicted is there to observe it.
-  if (!lookahead_ || !goal_ || !strategy_->uses_prediction() || visiting_predicted_) return false;
+  if (!lookahead_ || !goal_ || strategy_->prediction_use() != PredictionUse::kSkip || visiting_predicted_) return false;
   const slam::OccupancyGrid& m = map();
   const auto covered = [&](const FrontierCluster& f) {
     return lookahead_->predicted().covered_share(m, f, skip_rule()) >= options_.lookahead.skip_share;

@@ -108,6 +108,7 @@ void MissionOptions::validate() const {
   require(lookahead.skip_region_radius > 0, "lookahead.skip_region_radius > 0");
   require(lookahead.skip_share > 0 && lookahead.skip_share <= 1, "lookahead.skip_share in (0, 1]");
   predictor::validate(lookahead.predictor);
+  require(rate_offset > 0, "rate_offset > 0");
   require(time_limit > 0, "time_limit > 0");
   require(coverage_goal > 0 && coverage_goal <= 1, "coverage_goal in (0, 1]");
   require(goal_check_period > 0 && metrics_period > 0, "periods > 0");

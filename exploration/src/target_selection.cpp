@@ -96,11 +96,34 @@ double grid_path_bound(const planner::Costmap& cm, double price) {
   return 1.05 * price + std::sqrt(2.0) * cm.resolution();
 }
 
+// The information gain of a goal, with the look-ahead map as the strategy uses it.
+double goal_gain(const SelectionInputs& in, const FrontierCluster& f) {
+  const PredictionUse use = in.predicted ? in.strategy->prediction_use() : PredictionUse::kNone;
+  const slam::OccupancyGrid& map = *in.map;
+  switch (use) {
+    case PredictionUse::kNone:
+      return visible_information_gain(map, f.goal_x, f.goal_y, in.sensor_range);
+    case PredictionUse::kSkip: {
+      const auto known = [&](slam::CellIndex c) { return in.predicted->predicted(map, c); };
+      return visible_information_gain(map, f.goal_x, f.goal_y, in.sensor_range, known);
+    }
+    case PredictionUse::kOccludingGain: {
+      const slam::OccupancyGrid& predicted = in.predicted->cells();
+      const auto wall = [&](slam::CellIndex c) { return in.predicted->predicted(map, c) && predicted.is_obstacle(c); };
+      return visible_information_gain(map, f.goal_x, f.goal_y, in.sensor_range, nullptr, wall);
+    }
+  }
+  return 0.0;
+}
+
+bool skips_predicted(const SelectionInputs& in) {
+  return in.predicted && in.strategy->prediction_use() == PredictionUse::kSkip;
+}
+
 std::vector<Candidate> price(const SelectionInputs& in, const std::vector<FrontierCluster>& clusters,
                              const TravelCost& cost, bool& any_reachable, bool& any_waiting) {
   const planner::Costmap& cm = *in.costmap;
   std::vector<Candidate> out;
-  const auto& gain = visible_information_gain;
   any_reachable = false;
   any_waiting = false;
   for (const FrontierCluster& f : clusters) {
@@ -115,15 +138,9 @@ std::vector<Candidate> price(const SelectionInputs& in, const std::vector<Fronti
       any_waiting = any_waiting || !in.blacklist->permanent(f.goal_x, f.goal_y);
       continue;
     }
-    if (in.predicted && in.strategy->uses_prediction()) {
-      const PredictedMap& pm = *in.predicted;
-      const auto known = [&](slam::CellIndex c) { return pm.predicted(*in.map, c); };
-      Candidate c{&f, d, gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, known), 0.0};
-      c.predicted_share = pm.covered_share(*in.map, f, in.skip);
-      out.push_back(c);
-      continue;
-    }
-    out.push_back({&f, d, gain(*in.map, f.goal_x, f.goal_y, in.sensor_range, nullptr), 0.0});
+    Candidate c{&f, d, goal_gain(in, f), 0.0};
+    if (skips_predicted(in)) c.predicted_share = in.predicted->covered_share(*in.map, f, in.skip);
+    out.push_back(c);
   }
   return out;
 }
@@ -217,7 +234,7 @@ Selection select_target(const SelectionInputs& in) {
       if (!pick) break;
     }
     const FrontierCluster& target = *candidates[*pick].cluster;
-    if (in.predicted && in.strategy->uses_prediction()) log_predicted_shares(in, candidates, *pick);
+    if (skips_predicted(in)) log_predicted_shares(in, candidates, *pick);
     const planner::PlanResult r = plan_to(in, cost, *start, {target.goal_x, target.goal_y}, s);
     if (r.solved()) return s;
     ++s.plan_failures;

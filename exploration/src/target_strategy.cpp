@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "lookahead/exploration/distance_advantage_strategy.hpp"
+#include "lookahead/exploration/gain_rate_strategy.hpp"
 #include "lookahead/exploration/prediction_aware_strategy.hpp"
 
 namespace lookahead::exploration {
@@ -29,7 +30,8 @@ std::optional<std::size_t> UtilityStrategy::choose(const std::vector<Candidate>&
   return best;
 }
 
-std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double lambda, double skip_share) {
+std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double lambda, double skip_share,
+                                              double rate_offset) {
   if (name == "nearest") return std::make_unique<NearestFrontierStrategy>();
   if (name == "utility") return std::make_unique<UtilityStrategy>(lambda);
   if (name == "predictive") {
@@ -42,9 +44,11 @@ std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double la
   if (name == "predictive-advantage") {
     return std::make_unique<PredictionAwareStrategy>(std::make_unique<DistanceAdvantageStrategy>(), skip_share);
   }
-  throw std::invalid_argument(
-      "unknown strategy '" + name +
-      "' (nearest, utility, advantage, predictive, predictive-utility or predictive-advantage)");
+  if (name == "rate") return std::make_unique<GainRateStrategy>(rate_offset, false);
+  if (name == "predictive-rate") return std::make_unique<GainRateStrategy>(rate_offset, true);
+  throw std::invalid_argument("unknown strategy '" + name +
+                              "' (nearest, utility, advantage, rate, predictive, predictive-utility, "
+                              "predictive-advantage or predictive-rate)");
 }
 
 }  // namespace lookahead::exploration

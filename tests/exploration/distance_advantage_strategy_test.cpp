@@ -8,19 +8,13 @@
 #include <cmath>
 #include <limits>
 
+#include "frontier_goal.hpp"
+
 namespace lookahead::exploration {
 namespace {
 
-FrontierCluster at(double x, double y) {
-  FrontierCluster f;
-  f.has_goal = true;
-  f.goal_x = x;
-  f.goal_y = y;
-  return f;
-}
-
 TEST(DistanceAdvantage, IsTheGapToTheNearestOtherFrontierMinusTheTravelCost) {
-  const FrontierCluster a = at(2, 0), b = at(3, 0), c = at(-8, 0);
+  const FrontierCluster a = goal_at(2, 0), b = goal_at(3, 0), c = goal_at(-8, 0);
   const std::vector<Candidate> cands{{&a, 2.0, 0.0}, {&b, 3.0, 0.0}, {&c, 8.0, 0.0}};
   EXPECT_DOUBLE_EQ(distance_advantage(cands, 0), 1.0 - 2.0);
   EXPECT_DOUBLE_EQ(distance_advantage(cands, 1), 1.0 - 3.0);
@@ -30,13 +24,13 @@ TEST(DistanceAdvantage, IsTheGapToTheNearestOtherFrontierMinusTheTravelCost) {
 }
 
 TEST(DistanceAdvantage, TakesTheRobotsOwnFrontierBeforeNearerSharedOnes) {
-  const FrontierCluster a = at(2, 0), b = at(3, 0), c = at(-8, 0);
+  const FrontierCluster a = goal_at(2, 0), b = goal_at(3, 0), c = goal_at(-8, 0);
   const std::vector<Candidate> cands{{&a, 2.0, 0.0}, {&b, 3.0, 0.0}, {&c, 8.0, 0.0}};
   EXPECT_EQ(DistanceAdvantageStrategy().choose(cands), std::optional<std::size_t>(2));
 }
 
 TEST(DistanceAdvantage, WithoutAnAdvantageAnywhereIsNearest) {
-  const FrontierCluster a = at(5, 0), b = at(5.5, 0), c = at(6, 0);
+  const FrontierCluster a = goal_at(5, 0), b = goal_at(5.5, 0), c = goal_at(6, 0);
   const std::vector<Candidate> cands{{&a, 5.0, 0.0}, {&b, 5.5, 0.0}, {&c, 6.0, 0.0}};
   EXPECT_EQ(DistanceAdvantageStrategy().choose(cands), std::optional<std::size_t>(0));
   EXPECT_FALSE(DistanceAdvantageStrategy().choose({}).has_value());

@@ -33,6 +33,21 @@ TEST(InformationGain, KnownHalfPlaneHalvesTheGain) {
   EXPECT_NEAR(visible_information_gain(g, 0.0, 0.0, 2.0, predicted), 0.0, 1e-9);
 }
 
+TEST(InformationGain, CellsACallerNamesOccludeLikeWalls) {
+  // Unknown space seen from the origin with a 5 m range: the open disc, until a predicted
+  // wall ring at 2 m stops the rays and leaves the inside of the ring (predicted walls in
+  // the gain of predictive-rate).
+  const slam::OccupancyGrid g;
+  EXPECT_NEAR(visible_information_gain(g, 0.0, 0.0, 5.0), M_PI * 25.0, 0.02 * M_PI * 25.0);
+  const auto ring = [&](slam::CellIndex c) {
+    double x, y;
+    g.cell_center(c, x, y);
+    const double r = std::hypot(x, y);
+    return r >= 2.0 && r < 2.1;
+  };
+  EXPECT_NEAR(visible_information_gain(g, 0.0, 0.0, 5.0, nullptr, ring), M_PI * 4.0, 0.05 * M_PI * 4.0);
+}
+
 TEST(InformationGain, AWallHidesTheUnknownBehindIt) {
   // A wall along x = 1 m (cells of 5 cm) in unknown space: the disc of 2 m loses its
   // segment beyond the wall, R^2 acos(d/R) - d sqrt(R^2 - d^2) = 2.457 m^2 for d = 1, R = 2.

@@ -54,6 +54,18 @@ TEST(Mission, PredictiveMissionEndsOnExploredSpaceOnly) {
   EXPECT_EQ(m.statistics().collisions, 0);
 }
 
+// The gain-rate strategies explore the office to the goal, with and without the predictor.
+TEST(Mission, GainRateMissionsReachTheGoal) {
+  const GeneratedWorld w = small_office();
+  for (const char* strategy : {"rate", "predictive-rate"}) {
+    SCOPED_TRACE(strategy);
+    Mission m(w.world, w.start, quick(PoseSource::kTruth, strategy));
+    EXPECT_EQ(m.run(), MissionStatus::kCoverageReached);
+    EXPECT_GE(m.coverage(), 0.95);
+    EXPECT_EQ(m.statistics().collisions, 0);
+  }
+}
+
 TEST(Mission, SlamInTheLoopReaches95Percent) {
   const GeneratedWorld w = small_office();
   Mission m(w.world, w.start, quick(PoseSource::kSlam));

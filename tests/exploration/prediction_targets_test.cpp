@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "frontier_goal.hpp"
 #include "hand_made_grid.hpp"
 #include "lookahead/exploration/generated_worlds.hpp"
 #include "lookahead/exploration/mission.hpp"
@@ -15,14 +16,6 @@
 
 namespace lookahead::exploration {
 namespace {
-
-FrontierCluster goal_at(double x, double y) {
-  FrontierCluster f;
-  f.has_goal = true;
-  f.goal_x = x;
-  f.goal_y = y;
-  return f;
-}
 
 TEST(PredictionTargets, ASelectionPredictsItsGoalThenTheNearestOtherFrontiers) {
   const std::vector<FrontierCluster> clusters{goal_at(9, 0), goal_at(2, 0), goal_at(5.5, 0), goal_at(5, 0),

@@ -14,13 +14,14 @@ namespace lookahead::exploration {
 /// predicted cells); null = none.
 using CountsAsKnown = std::function<bool(slam::CellIndex)>;
 
+/// Cells a caller treats as walls besides the map's (predicted walls); null = none.
+using Occludes = std::function<bool(slam::CellIndex)>;
 /// Unknown area [m^2] in line of sight within `range` of (x, y): rays fan out from the goal
-/// and stop at the map's occupied cells; unknown cells are taken to be transparent (the
-/// optimistic assumption of Gonzalez-Banos & Latombe). Space behind a wall already mapped,
-/// such as the outside of the building, does not count.
+/// and stop at the map's occupied cells (and at cells `occludes` names); unknown cells are
+/// taken to be transparent (the optimistic assumption of Gonzalez-Banos & Latombe). Space
+/// behind a wall already mapped, such as the outside of the building, does not count.
 double visible_information_gain(const slam::OccupancyGrid& grid, double x, double y, double range,
-                                const CountsAsKnown& counts_as_known = nullptr);
-
+                                const CountsAsKnown& counts_as_known = nullptr, const Occludes& occludes = nullptr);
 /// Unknown area [m^2] within `range` of (x, y), walls ignored (the disc approximation: an
 /// upper bound of the gain above, for tests and benchmarks).
 double information_gain(const slam::OccupancyGrid& grid, double x, double y, double range,

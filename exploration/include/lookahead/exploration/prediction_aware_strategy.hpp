@@ -26,7 +26,7 @@ class PredictionAwareStrategy : public TargetStrategy {
   [[nodiscard]] std::optional<std::size_t> choose_any(const std::vector<Candidate>& c) const override {
     return base_->choose(c);
   }
-  [[nodiscard]] bool uses_prediction() const override { return true; }
+  [[nodiscard]] PredictionUse prediction_use() const override { return PredictionUse::kSkip; }
 
  private:
   std::unique_ptr<TargetStrategy> base_;

@@ -23,6 +23,17 @@ struct Candidate {
   double predicted_share = 0.0;
 };
 
+/// How a strategy uses P-SLAM's look-ahead map (predicted_map.hpp).
+enum class PredictionUse {
+  kNone,
+  /// Look-ahead mapping (P-SLAM sec. II-B): predicted cells count as known in the gain,
+  /// predicted_share is filled in, and covered frontiers may be skipped.
+  kSkip,
+  /// The gain is seen through the prediction: predicted walls stop its rays, predicted
+  /// free cells still count as unexplored (gain_rate_strategy.hpp).
+  kOccludingGain,
+};
+
 class TargetStrategy {
  public:
   virtual ~TargetStrategy() = default;
@@ -34,9 +45,10 @@ class TargetStrategy {
   [[nodiscard]] virtual std::optional<std::size_t> choose_any(const std::vector<Candidate>& candidates) const {
     return choose(candidates);
   }
-  /// True when candidates must be priced with the look-ahead map (predicted cells count as
-  /// known in the gain, predicted_share filled in).
-  [[nodiscard]] virtual bool uses_prediction() const { return false; }
+  /// How candidates are priced with the look-ahead map, if at all.
+  [[nodiscard]] virtual PredictionUse prediction_use() const { return PredictionUse::kNone; }
+  /// True when the mission must run the structure predictor for this strategy.
+  [[nodiscard]] bool uses_prediction() const { return prediction_use() != PredictionUse::kNone; }
 };
 
 /// The closest frontier by path cost (Yamauchi 1997).
@@ -58,10 +70,12 @@ class UtilityStrategy : public TargetStrategy {
   double lambda_;
 };
 
-/// "nearest", "utility" (with `lambda`), "advantage" (distance_advantage_strategy.hpp), or
-/// one of them with P-SLAM skipping (prediction_aware_strategy.hpp): "predictive" (over
-/// nearest), "predictive-utility", "predictive-advantage"; throws std::invalid_argument
-/// naming the choices otherwise.
-std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double lambda = 1.0, double skip_share = 0.8);
+/// "nearest", "utility" (with `lambda`), "advantage" (distance_advantage_strategy.hpp),
+/// "rate" (with `rate_offset`, gain_rate_strategy.hpp) or "predictive-rate" (its gain seen
+/// through the prediction), or one of the first three with P-SLAM skipping
+/// (prediction_aware_strategy.hpp): "predictive" (over nearest), "predictive-utility",
+/// "predictive-advantage"; throws std::invalid_argument naming the choices otherwise.
+std::unique_ptr<TargetStrategy> make_strategy(const std::string& name, double lambda = 1.0, double skip_share = 0.8,
+                                              double rate_offset = 4.0);
 
 }  // namespace lookahead::exploration

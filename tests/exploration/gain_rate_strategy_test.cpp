@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// Gain rate: the most unknown area per metre of travel, with a fixed offset on every path;
+// with prediction, the gain is priced through the look-ahead map.
+#include "lookahead/exploration/gain_rate_strategy.hpp"
+
+#include <gtest/gtest.h>
+
+#include "frontier_goal.hpp"
+
+namespace lookahead::exploration {
+namespace {
+
+TEST(GainRate, IsTheGainPerMetreWithTheOffsetOnThePath) {
+  const FrontierCluster a = goal_at(1, 0);
+  EXPECT_DOUBLE_EQ(gain_rate({&a, 6.0, 30.0}, 4.0), 3.0);
+  EXPECT_DOUBLE_EQ(gain_rate({&a, 0.0, 30.0}, 4.0), 7.5);
+}
+
+TEST(GainRate, TakesARoomAFewMetresOnBeforeASliverAtArmsLength) {
+  const FrontierCluster sliver = goal_at(0.1, 0), room = goal_at(6, 0);
+  const std::vector<Candidate> cands{{&sliver, 0.1, 2.0}, {&room, 6.0, 40.0}};
+  EXPECT_EQ(GainRateStrategy(4.0, false).choose(cands), std::optional<std::size_t>(1));
+  // Nearest would take the sliver; so does a rate with no offset, where a tenth of a metre
+  // divides the sliver's gain by almost nothing.
+  EXPECT_EQ(GainRateStrategy(0.01, false).choose(cands), std::optional<std::size_t>(0));
+}
+
+TEST(GainRate, DoesNotCrossTheBuildingForALittleMoreGain) {
+  const FrontierCluster near = goal_at(3, 0), far = goal_at(60, 0);
+  const std::vector<Candidate> cands{{&near, 3.0, 50.0}, {&far, 60.0, 120.0}};
+  EXPECT_EQ(GainRateStrategy(4.0, false).choose(cands), std::optional<std::size_t>(0));
+}
+
+TEST(GainRate, WithNoGainAnywhereTakesTheNearest) {
+  const FrontierCluster a = goal_at(5, 0), b = goal_at(2, 0), c = goal_at(9, 0);
+  const std::vector<Candidate> cands{{&a, 5.0, 0.0}, {&b, 2.0, 0.0}, {&c, 9.0, 0.0}};
+  EXPECT_EQ(GainRateStrategy(4.0, false).choose(cands), std::optional<std::size_t>(1));
+  EXPECT_FALSE(GainRateStrategy(4.0, false).choose({}).has_value());
+}
+
+TEST(GainRate, TheFactoryKnowsItWithAndWithoutPrediction) {
+  EXPECT_EQ(make_strategy("rate")->name(), "rate");
+  EXPECT_EQ(make_strategy("rate")->prediction_use(), PredictionUse::kNone);
+  EXPECT_FALSE(make_strategy("rate")->uses_prediction());
+  EXPECT_EQ(make_strategy("predictive-rate")->name(), "predictive-rate");
+  EXPECT_EQ(make_strategy("predictive-rate")->prediction_use(), PredictionUse::kOccludingGain);
+  EXPECT_EQ(make_strategy("predictive")->prediction_use(), PredictionUse::kSkip);
+}
+
+TEST(GainRate, TheOffsetReachesTheStrategy) {
+  const FrontierCluster sliver = goal_at(0.1, 0), room = goal_at(6, 0);
+  const std::vector<Candidate> cands{{&sliver, 0.1, 2.0}, {&room, 6.0, 40.0}};
+  EXPECT_EQ(make_strategy("rate", 1.0, 0.8, 4.0)->choose(cands), std::optional<std::size_t>(1));
+  EXPECT_EQ(make_strategy("rate", 1.0, 0.8, 0.01)->choose(cands), std::optional<std::size_t>(0));
+}
+
+}  // namespace
+}  // namespace lookahead::exploration
