@@ -95,6 +95,19 @@ TEST(MissionConfig, ImpossibleValuesAreParseErrorsNamingTheFile) {
 }
 
 // The slam body goes to the SLAM loader; its errors keep this file's line numbers.
+TEST(MissionConfig, GarbageRateOffsetNamesLineAndValue) {
+  slam::ParseError e = parse_error("mission:\n  strategy: rate\n  rate_offset: four\n");
+  EXPECT_EQ(e.line(), 3u);
+  EXPECT_EQ(e.field(), "mission.rate_offset");
+  EXPECT_EQ(e.value(), "four");
+  e = parse_error("mission:\n  rate_offset: -2\n");  // a path can not cost less than nothing
+  EXPECT_EQ(e.file(), "my.yaml");
+  EXPECT_EQ(e.line(), 2u);
+  EXPECT_EQ(e.value(), "-2");
+  EXPECT_EQ(parse_error("mission:\n  rate_offset: 0\n").field(), "mission.rate_offset");
+  EXPECT_DOUBLE_EQ(parse_mission_options("mission:\n  rate_offset: 2.5\n", "x").rate_offset, 2.5);
+}
+
 TEST(MissionConfig, SlamSectionKeepsLineNumbers) {
   const MissionOptions o =
       parse_mission_options("mission:\n  seed: 5\nslam:\n  filter:\n    particles: 7\n  motion:\n    srr: 0.2\n", "x");

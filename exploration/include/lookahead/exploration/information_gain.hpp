@@ -22,6 +22,7 @@ using Occludes = std::function<bool(slam::CellIndex)>;
 /// behind a wall already mapped, such as the outside of the building, does not count.
 double visible_information_gain(const slam::OccupancyGrid& grid, double x, double y, double range,
                                 const CountsAsKnown& counts_as_known = nullptr, const Occludes& occludes = nullptr);
+
 /// Unknown area [m^2] within `range` of (x, y), walls ignored (the disc approximation: an
 /// upper bound of the gain above, for tests and benchmarks).
 double information_gain(const slam::OccupancyGrid& grid, double x, double y, double range,
