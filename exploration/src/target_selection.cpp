@@ -5,29 +5,49 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
 
 #include "lookahead/exploration/information_gain.hpp"
 #include "lookahead/exploration/travel_cost.hpp"
 
 namespace lookahead::exploration {
 
-std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, double x, double y, double radius) {
+std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, const slam::OccupancyGrid& map, double x,
+                                            double y, double radius) {
   const slam::CellIndex c = costmap.cell_at({x, y});
   if (costmap.cell_is_free(c)) return planner::Point2{x, y};
+  // Breadth-first through the map's open cells, 4-connected so that no step slips between
+  // two wall cells touching at a corner; the first free cell reached is the nearest by the
+  // walk, the straight-line nearest among that ring. The nearest free cell as the crow
+  // flies may lie behind a wall: in a passage the margin closes, a start in the next room
+  // sent the robot into the wall beside it for as long as the reactive stop held it.
   const int r = static_cast<int>(std::ceil(radius / costmap.resolution()));
-  std::optional<planner::Point2> best;
-  double best_d = INFINITY;
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      const slam::CellIndex q{c.x + dx, c.y + dy};
-      const double d = std::hypot(dx, dy);
-      if (d <= r && d < best_d && costmap.cell_is_free(q)) {
+  const double occupied = costmap.options().occupied_threshold;
+  const auto open = [&](slam::CellIndex q) { return map.is_known(q) && map.probability(q) < occupied; };
+  std::unordered_set<slam::CellIndex, CellHash> seen{c};
+  std::vector<slam::CellIndex> ring{c};
+  for (int step = 0; step < 2 * r && !ring.empty(); ++step) {
+    std::vector<slam::CellIndex> next;
+    for (const slam::CellIndex q : ring) {
+      for (const slam::CellIndex n : {slam::CellIndex{q.x + 1, q.y}, slam::CellIndex{q.x - 1, q.y},
+                                      slam::CellIndex{q.x, q.y + 1}, slam::CellIndex{q.x, q.y - 1}}) {
+        if (std::hypot(n.x - c.x, n.y - c.y) > r || !open(n) || !seen.insert(n).second) continue;
+        next.push_back(n);
+      }
+    }
+    std::optional<planner::Point2> best;
+    double best_d = INFINITY;
+    for (const slam::CellIndex q : next) {
+      const double d = std::hypot(q.x - c.x, q.y - c.y);
+      if (d < best_d && costmap.cell_is_free(q)) {
         best_d = d;
         best = costmap.cell_center(q);
       }
     }
+    if (best) return best;
+    ring = std::move(next);
   }
-  return best;
+  return std::nullopt;
 }
 
 namespace {
@@ -213,7 +233,7 @@ Selection select_target(const SelectionInputs& in) {
     return s;  // kNoFrontier
   }
   s.outcome = SelectionOutcome::kUnreachable;
-  const auto start = nearest_free(*in.costmap, in.pose.x, in.pose.y, 0.5);
+  const auto start = nearest_free(*in.costmap, *in.map, in.pose.x, in.pose.y, 0.5);
   if (!start) return s;
   bool any_reachable = false, any_waiting = false;
   const TravelCost cost = travel_cost(*in.costmap, *start, goal_cells(*in.costmap, clusters));
@@ -249,7 +269,7 @@ Selection select_target(const SelectionInputs& in) {
 Selection replan_to_goal(const SelectionInputs& in, const planner::Point2& goal) {
   Selection s;
   s.outcome = SelectionOutcome::kPlanFailed;
-  const auto start = nearest_free(*in.costmap, in.pose.x, in.pose.y, 0.5);
+  const auto start = nearest_free(*in.costmap, *in.map, in.pose.x, in.pose.y, 0.5);
   if (!start || !in.costmap->is_free(goal)) return s;
   const TravelCost cost = travel_cost(*in.costmap, *start, {in.costmap->cell_at(goal)});
   if (!cost.reachable(in.costmap->cell_at(goal))) return s;
@@ -261,7 +281,7 @@ Selection select_escape(const SelectionInputs& in, Breadcrumbs& crumbs) {
   Selection s;
   s.outcome = SelectionOutcome::kUnreachable;
   const planner::Costmap& cm = *in.costmap;
-  const auto start = nearest_free(cm, in.pose.x, in.pose.y, 0.5);
+  const auto start = nearest_free(cm, *in.map, in.pose.x, in.pose.y, 0.5);
   // With no free cell near the robot its place is empty: any free crumb is outside it.
   const std::optional<TravelCost> place = start ? std::optional<TravelCost>(travel_cost(cm, *start)) : std::nullopt;
   const auto outside = [&](planner::Point2 p) { return cm.is_free(p) && !(place && place->reachable(cm.cell_at(p))); };

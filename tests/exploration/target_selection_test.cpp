@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "hand_made_grid.hpp"
 #include "lookahead/exploration/goal_blacklist.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
@@ -78,6 +80,30 @@ TEST(TargetSelection, EveryFrontierPredictedStillPlansToOne) {
   EXPECT_EQ(sel.outcome, SelectionOutcome::kPlanned);
   EXPECT_TRUE(sel.rest_predicted);
   EXPECT_GT(sel.goal_x, 2.5);  // the frontier on the room's open right side
+}
+
+// A 0.3 m passage between two rooms, which a 0.2 m body with no margin closes on the
+// costmap. The free cell nearest a robot inside it lies in the room beyond the wall above;
+// the start of a plan must be one the robot can drive to, along the passage.
+TEST(TargetSelection, TheNearestFreeCellIsNotBehindAWall) {
+  slam::OccupancyGrid map;
+  testing::add_rect(map, 0, 0, 99, 59, 3 * map.fixed_miss());
+  testing::add_rect(map, 20, 24, 79, 24, 6 * map.fixed_hit());  // the passage's walls (over the free cells)
+  testing::add_rect(map, 20, 31, 79, 31, 6 * map.fixed_hit());
+  planner::CostmapOptions co;
+  co.robot_radius = 0.2;
+  co.safety_margin = 0.0;
+  co.unknown_is_free = true;
+  const planner::Costmap costmap(map, co);
+  const double x = 2.5, y = 1.4;  // in the passage, 1.5 m from either end
+  ASSERT_FALSE(costmap.is_free(x, y));
+  ASSERT_TRUE(costmap.is_free(x, 1.85));  // the room above, 0.45 m away through the wall
+  EXPECT_FALSE(nearest_free(costmap, map, x, y, 0.5).has_value());
+  EXPECT_FALSE(nearest_free(costmap, map, x, y, 1.2).has_value());  // no end of the passage within reach
+  const auto start = nearest_free(costmap, map, x, y, 2.0);
+  ASSERT_TRUE(start.has_value());
+  // Out of the passage's end (1.5 m off) and round its wall at most.
+  EXPECT_GT(std::hypot(start->x - x, start->y - y), 1.45);
 }
 
 }  // namespace

@@ -72,8 +72,11 @@ Selection replan_to_goal(const SelectionInputs& in, const planner::Point2& goal)
 /// at that crumb (the newer crumbs are popped), or kUnreachable when no crumb lies outside.
 Selection select_escape(const SelectionInputs& in, Breadcrumbs& crumbs);
 
-/// The free cell of `costmap` nearest to (x, y) within `radius` (a robot brushing a wall
-/// may sit in the inflation zone); nullopt when there is none.
-std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, double x, double y, double radius);
+/// The free cell of `costmap` nearest to (x, y) within `radius` that the robot can get to
+/// from there without crossing a wall of `map` (a robot brushing a wall, or in a passage
+/// the safety margin closes, sits in the inflation zone); nullopt when there is none.
+/// Cells count as open when `map` knows them below the costmap's occupied threshold.
+std::optional<planner::Point2> nearest_free(const planner::Costmap& costmap, const slam::OccupancyGrid& map, double x,
+                                            double y, double radius);
 
 }  // namespace lookahead::exploration
