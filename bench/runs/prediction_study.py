@@ -134,7 +134,7 @@ def skip_report(runs):
 
 
 def funnel_report(runs):
-    funnel = defaultdict(lambda: [0, 0, 0, 0, 0, 0.0])
+    funnel = defaultdict(lambda: [0, 0, 0, 0, 0, 0, 0, 0])
     for r in runs:
         p = r.get('prediction')
         if not p:
@@ -143,14 +143,17 @@ def funnel_report(runs):
         f[0] += p['requests']; f[1] += p['no_control_point']; f[2] += p['no_match']; f[3] += p['hypotheses']
         for h in p.get('hypothesis_list', []):
             f[4] += h.get('cells', 0); f[5] += h.get('cells_right', 0)
+            f[6] += h.get('wall_cells', 0); f[7] += h.get('wall_cells_right', 0)
     if not funnel:
         return
     print('\n## Predictor funnel (summed over missions)\n')
-    print('| strategy | targets asked | no control point | no match above Psi threshold | hypotheses | hypothesis cells right |')
-    print('|---|---|---|---|---|---|')
+    print('| strategy | targets asked | no control point | no match above Psi threshold | hypotheses '
+          '| hypothesis cells right | predicted wall cells right |')
+    print('|---|---|---|---|---|---|---|')
     for s, f in sorted(funnel.items()):
         right = f'{f[5] / f[4]:.3f}' if f[4] else '-'
-        print(f'| {s} | {f[0]} | {f[1]} | {f[2]} | {f[3]} | {right} |')
+        walls = f'{f[7] / f[6]:.3f}' if f[6] else '-'
+        print(f'| {s} | {f[0]} | {f[1]} | {f[2]} | {f[3]} | {right} | {walls} |')
 
 
 def subset(study, out, strategies, seeds, plans, max_area=''):

@@ -101,7 +101,7 @@ def main(folder):
         print(f"\nall hypotheses: {len(all_psi)}, Psi against the world: mean {sum(all_psi) / len(all_psi):.2f}, "
               f"{sum(v > 0.4 for v in all_psi)} above 0.4 ({100 * sum(v > 0.4 for v in all_psi) / len(all_psi):.0f} %), "
               f"range {min(all_psi):.2f}..{max(all_psi):.2f}")
-    if all_solid:  # the measure before 2026-11-22: every world cell, solid outside included
+    if all_solid:  # every world cell, solid outside included (space no robot observes)
         print(f"against every world cell instead (solid beyond the outer walls): mean {sum(all_solid) / len(all_solid):.2f}, "
               f"{sum(v > 0.4 for v in all_solid)} above 0.4 ({100 * sum(v > 0.4 for v in all_solid) / len(all_solid):.0f} %)")
 

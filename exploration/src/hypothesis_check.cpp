@@ -75,7 +75,10 @@ HypothesisCheck check_against_world(const slam::HypothesisMap& h, const World& w
       h.grid.cell_center({x, y}, cx, cy);
       ++check.cells;
       const bool wall = h.grid.probability({x, y}) >= occupied_threshold;
-      check.correct += prediction_matches_world(wall, world, cx, cy, wall_tolerance);
+      const bool right = prediction_matches_world(wall, world, cx, cy, wall_tolerance);
+      check.correct += right;
+      check.wall_cells += wall;
+      check.walls_correct += wall && right;
     }
   }
   const double res = similarity_resolution;

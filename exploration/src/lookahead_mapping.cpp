@@ -36,8 +36,8 @@ std::shared_ptr<const slam::HypothesisMap> LookaheadMapping::deliver(double now)
   pending_ = false;
   const std::optional<predictor::Prediction> p = worker_.wait();
   // The record and map of this request, before start_next() overwrites them with the next
-  // one's (it did until 2026-11-22: every record after the first of a selection carried the
-  // next target's position and time).
+  // one's (else every record after the first of a selection would carry the next target's
+  // position and time).
   PredictionRecord r = pending_record_;
   const slam::OccupancyGrid map = pending_map_;
   start_next(now);

@@ -62,6 +62,8 @@ nlohmann::json hypotheses_json(const std::vector<PredictionRecord>& records) {
                      {"psi_solid_world", r.truth.psi_solid_world},
                      {"cells", r.truth.cells},
                      {"cells_right", r.truth.correct},
+                     {"wall_cells", r.truth.wall_cells},
+                     {"wall_cells_right", r.truth.walls_correct},
                      {"predicted_wall_samples", r.truth.predicted_walls},
                      {"world_wall_samples", r.truth.world_walls}};
     if (r.alignment) {

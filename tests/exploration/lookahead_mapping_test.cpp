@@ -319,6 +319,8 @@ TEST(HypothesisCheck, CountsCellsTheWorldConfirms) {
   const HypothesisCheck c = check_against_world(h, world, {}, 0.65);
   EXPECT_EQ(c.cells, 120u);
   EXPECT_EQ(c.correct, 80u);
+  EXPECT_EQ(c.wall_cells, 80u);  // the two walls, of which the one at y = 1 is real
+  EXPECT_EQ(c.walls_correct, 40u);
   EXPECT_NEAR(c.psi, 0.67, 0.05);  // half the predicted walls are real: 2 * 1 / (2 + 1)
 }
 

@@ -16,10 +16,14 @@ struct HypothesisCheck {
   /// hypothesis' cells (the paper's measure against the final built map, sec. V-A.2).
   double psi = 0.0;
   /// The same against every world cell, the solid space beyond the outer walls and inside
-  /// thick walls included (what was reported before 2026-11-22; kept for comparison).
+  /// thick walls included, which no robot observes (reported beside psi for comparison).
   double psi_solid_world = 0.0;
   std::size_t cells = 0;    ///< predicted cells
   std::size_t correct = 0;  ///< ... whose class (wall or free) the world confirms
+  /// Predicted wall cells, and those with a true wall within the tolerance: the cells a
+  /// gain seen through the prediction decides with (predicted free cells still count as
+  /// unexplored there).
+  std::size_t wall_cells = 0, walls_correct = 0;
   /// The two sides of Psi: wall samples (similarity_resolution cells) in the hypothesis, and
   /// in the world over the same samples (what tells a wrong wall from a missed one).
   int predicted_walls = 0, world_walls = 0;
