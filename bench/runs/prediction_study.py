@@ -4,10 +4,12 @@
 run.json). Standard library only.
 
   prediction_study.py report OUT          markdown on stdout
-  prediction_study.py subset STUDY OUT STRATEGIES SEEDS PLANS [MAX_AREA]
+  prediction_study.py subset STUDY OUT STRATEGIES SEEDS PLANS [MAX_AREA [LASER]]
                                           STUDY with only the named strategies, seeds and
-                                          plan labels (space-separated; empty: all), and
-                                          only plans of at most MAX_AREA m^2 free
+                                          plan labels (space-separated; empty: all), only
+                                          plans of at most MAX_AREA m^2 free, and with LASER
+                                          "FOV_DEG RANGE_M" the laser's field of view and
+                                          range replaced (the Pioneer's: "180 8")
 
 Paired comparisons: per plan and seed, a strategy's time to 95 % of the reachable area
 explored over nearest's; the geometric mean of these ratios with a 95 % bootstrap interval
@@ -156,7 +158,7 @@ def funnel_report(runs):
         print(f'| {s} | {f[0]} | {f[1]} | {f[2]} | {f[3]} | {right} | {walls} |')
 
 
-def subset(study, out, strategies, seeds, plans, max_area=''):
+def subset(study, out, strategies, seeds, plans, max_area='', laser=''):
     text = open(study).read()
     base = os.path.relpath(os.path.dirname(os.path.abspath(study)), os.path.dirname(os.path.abspath(out)))
     head, rest = text.split('worlds:\n', 1)
@@ -172,13 +174,19 @@ def subset(study, out, strategies, seeds, plans, max_area=''):
         tail = re.sub(r'strategies: \[[^\]]*\]', 'strategies: [' + ', '.join(strategies.split()) + ']', tail)
     if seeds.split():
         tail = re.sub(r'seeds: .*', 'seeds: [' + ', '.join(seeds.split()) + ']', tail)
+    if laser.split():
+        fov_deg, max_range = (float(v) for v in laser.split())
+        tail, n_fov = re.subn(r'(\n\s+fov: )\S+.*', lambda m: f'{m.group(1)}{math.radians(fov_deg):.9f}', tail)
+        tail, n_range = re.subn(r'(\n\s+max_range: )\S+.*', lambda m: f'{m.group(1)}{max_range:g}', tail)
+        if n_fov != 1 or n_range != 1:
+            sys.exit(f'{study}: LASER needs exactly one mission.laser fov and max_range to replace')
     open(out, 'w').write(head + 'worlds:\n' + ''.join('  - name: ' + i for i in items) + tail)
 
 
 if __name__ == '__main__':
     if len(sys.argv) >= 3 and sys.argv[1] == 'report':
         report(sys.argv[2])
-    elif len(sys.argv) in (7, 8) and sys.argv[1] == 'subset':
+    elif len(sys.argv) in (7, 8, 9) and sys.argv[1] == 'subset':
         subset(*sys.argv[2:])
     else:
         sys.exit(__doc__)

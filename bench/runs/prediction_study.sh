@@ -8,7 +8,8 @@
 # mission (bench/runs/prediction_study.py).
 # Usage: bash bench/runs/prediction_study.sh [STUDY.yaml]
 #   STRATEGIES="nearest advantage" SEEDS="1 2" PLANS="kth_50055649 kth_50045369" pick a subset,
-#   MAX_AREA=800 only the plans of at most 800 m^2 free
+#   MAX_AREA=800 only the plans of at most 800 m^2 free, LASER="180 8" the Pioneer's laser
+#   (field of view in degrees, range in metres) in place of the study's
 #   (written as OUT/study.yaml); JOBS=2 runs in parallel; LOOKAHEAD=/path/to/lookahead.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -16,9 +17,9 @@ source bench/runs/stamp.sh
 study=${1:-config/study/kth_all.yaml}
 out=out/study/$(basename "$study" .yaml)
 mkdir -p "$out"
-if [[ -n "${STRATEGIES:-}${SEEDS:-}${PLANS:-}${MAX_AREA:-}" ]]; then
+if [[ -n "${STRATEGIES:-}${SEEDS:-}${PLANS:-}${MAX_AREA:-}${LASER:-}" ]]; then
   python3 bench/runs/prediction_study.py subset "$study" "$out/study.yaml" \
-    "${STRATEGIES:-}" "${SEEDS:-}" "${PLANS:-}" "${MAX_AREA:-}"
+    "${STRATEGIES:-}" "${SEEDS:-}" "${PLANS:-}" "${MAX_AREA:-}" "${LASER:-}"
   study=$out/study.yaml
 fi
 stamp "$out"
