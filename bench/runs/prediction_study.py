@@ -158,6 +158,18 @@ def funnel_report(runs):
         print(f'| {s} | {f[0]} | {f[1]} | {f[2]} | {f[3]} | {right} | {walls} |')
 
 
+def laser_setting(laser):
+    """LASER "FOV_DEG RANGE_M" as two numbers, fov in (0, 360], range > 0; exits naming the value."""
+    words = laser.split()
+    try:
+        fov_deg, max_range = (float(v) for v in words)
+    except ValueError:
+        sys.exit(f'LASER "{laser}": expected two numbers, "FOV_DEG RANGE_M" (the Pioneer\'s: "180 8")')
+    if not 0 < fov_deg <= 360 or not max_range > 0:
+        sys.exit(f'LASER "{laser}": the field of view must be in (0, 360] degrees and the range > 0 m')
+    return fov_deg, max_range
+
+
 def subset(study, out, strategies, seeds, plans, max_area='', laser=''):
     text = open(study).read()
     base = os.path.relpath(os.path.dirname(os.path.abspath(study)), os.path.dirname(os.path.abspath(out)))
@@ -175,7 +187,7 @@ def subset(study, out, strategies, seeds, plans, max_area='', laser=''):
     if seeds.split():
         tail = re.sub(r'seeds: .*', 'seeds: [' + ', '.join(seeds.split()) + ']', tail)
     if laser.split():
-        fov_deg, max_range = (float(v) for v in laser.split())
+        fov_deg, max_range = laser_setting(laser)
         tail, n_fov = re.subn(r'(\n\s+fov: )\S+.*', lambda m: f'{m.group(1)}{math.radians(fov_deg):.9f}', tail)
         tail, n_range = re.subn(r'(\n\s+max_range: )\S+.*', lambda m: f'{m.group(1)}{max_range:g}', tail)
         if n_fov != 1 or n_range != 1:

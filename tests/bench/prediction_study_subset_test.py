@@ -1,0 +1,44 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""bench/runs/prediction_study.py subset: LASER replaces the study's laser, and garbage in
+LASER stops the driver with a message naming the value before any mission runs."""
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), '..', '..'))
+SCRIPT = os.path.join(ROOT, 'bench', 'runs', 'prediction_study.py')
+STUDY = os.path.join(ROOT, 'config', 'study', 'kth_all.yaml')
+
+
+def subset(laser, out):
+    return subprocess.run([sys.executable, SCRIPT, 'subset', STUDY, out, 'nearest', '1', '', '800', laser],
+                          capture_output=True, text=True)
+
+
+class LaserSetting(unittest.TestCase):
+    def test_the_pioneers_laser_replaces_fov_and_range(self):
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, 'study.yaml')
+            r = subset('180 8', out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            text = open(out).read()
+            self.assertIn('    fov: 3.141592654\n', text)
+            self.assertIn('    max_range: 8\n', text)
+            self.assertNotIn('max_range: 12', text)
+            self.assertIn('strategies: [nearest]', text)
+
+    def test_garbage_is_rejected_naming_the_value(self):
+        for bad in ('abc 8', '180', '180 8 2', '0 8', '400 8', '180 -1', '180 nan'):
+            with tempfile.TemporaryDirectory() as d:
+                out = os.path.join(d, 'study.yaml')
+                r = subset(bad, out)
+                self.assertNotEqual(r.returncode, 0, bad)
+                self.assertIn(f'LASER "{bad}"', r.stderr, bad)
+                self.assertFalse(os.path.exists(out), bad)
+
+
+if __name__ == '__main__':
+    unittest.main()
