@@ -299,18 +299,15 @@ void Mission::act() {
   if (!follower_) stop_.clear();
   if (turned_ < options_.initial_turn) {
     cmd.omega = options_.robot.max_turn_rate;  // look around before choosing a target
+  } else if (follower_ && escape_.active()) {
+    cmd = escape_.command(last_scan_, estimate(), escape_limits());
   } else if (follower_) {
     cmd = follower_->command(estimate());
     const StopGeometry stop{options_.robot.radius, options_.stop_distance, options_.laser.period(), tight_};
     if (cmd.v > 0 && ReactiveStop::blocks(last_scan_, cmd, stop)) {
       cmd.v = 0.0;  // turn on the spot only; the costmap catches up at the next refresh
       ++stats_.safety_stops;
-      // A stop that lasts gives the path up: the navigation replans (Follow -> Replan).
-      if (stop_.hold(backtracking_ || squeezing_)) {
-        follower_.reset();
-        path_blocked_ = true;
-        ++stats_.replans;
-      }
+      hold_at_stop();
     } else {
       stop_.clear();
     }
@@ -329,6 +326,21 @@ void Mission::act() {
     ++stats_.collisions;
     status_ = MissionStatus::kCollision;
   }
+}
+
+void Mission::hold_at_stop() {
+  // A hold that outlasts a map refresh may be a corner pinning the body: turn and creep out.
+  if (stop_.escape_due() && escape_.start(last_scan_, estimate(), escape_limits())) ++stats_.stop_escapes;
+  // A stop that lasts gives the path up: the navigation replans (Follow -> Replan).
+  if (stop_.hold(backtracking_ || squeezing_)) {
+    follower_.reset();
+    path_blocked_ = true;
+    ++stats_.replans;
+  }
+}
+
+EscapeLimits Mission::escape_limits() const {
+  return {options_.robot.radius, options_.robot.max_speed, options_.robot.max_turn_rate, options_.laser.period()};
 }
 
 void Mission::record() {

@@ -134,11 +134,13 @@ bool Mission::replan_current_goal() {
     follower_ = std::move(blocked);
     kept_on_body_ = true;
     ++stats_.kept_paths;
+    escape_.arm();
     return true;
   }
   if (!planned) return false;
   follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
   kept_on_body_ = false;
+  escape_.arm();
   return true;
 }
 
@@ -231,6 +233,7 @@ void Mission::follow(const Selection& s, const planner::FollowerOptions& trackin
   goal_ = planner::Point2{s.goal_x, s.goal_y};
   follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
   kept_on_body_ = false;
+  escape_.arm();
   const slam::Pose2 p = estimate();
   stuck_clock_.start(time_, std::hypot(s.goal_x - p.x, s.goal_y - p.y), planner::path_length(s.path), path_length_);
   next_goal_check_ = time_ + options_.goal_check_period;

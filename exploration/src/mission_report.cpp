@@ -134,6 +134,7 @@ std::string to_json(const MissionSummary& s) {
                   {"stuck_goals", s.statistics.stuck_goals},       {"forgiven_goals", s.statistics.forgiven_goals},
                   {"grid_fallbacks", s.statistics.grid_fallbacks}, {"planning_time_s", s.statistics.planning_time}};
   j["safety_stops"] = s.statistics.safety_stops;
+  j["stop_escapes"] = s.statistics.stop_escapes;
   j["backtracks"] = s.statistics.backtracks;
   j["squeezes"] = s.statistics.squeezes;
   j["kept_paths"] = s.statistics.kept_paths;

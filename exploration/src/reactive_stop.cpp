@@ -10,6 +10,10 @@ namespace {
 // from where it stands (2 s at 10 Hz): the stop found something the path does not avoid.
 constexpr int kStopsBeforeReplan = 20;
 
+// Steps held before the robot tries to turn and creep out (1 s): a map that had not caught
+// up with a wall refreshes within it; a hold that outlasts it is a corner pinning the body.
+constexpr int kStopsBeforeEscape = kStopsBeforeReplan / 2;
+
 // The reactive stop's corridor is this much wider than the body on each side [m].
 constexpr double kStopSideClearance = 0.02;
 
@@ -24,6 +28,8 @@ bool ReactiveStop::hold(bool must_wait) {
   held_ = 0;
   return true;
 }
+
+bool ReactiveStop::escape_due() const { return held_ == kStopsBeforeEscape; }
 
 bool ReactiveStop::blocks(const slam::LaserScan& scan, const planner::VelocityCommand& cmd, const StopGeometry& g) {
   // Half through a door the margin closes (after a squeeze) the jambs are a few cm from the

@@ -12,6 +12,10 @@ namespace {
 // of the KTH setups, so a wall tip cannot pass between two of them unseen.
 constexpr double kStep = 0.02;
 
+// Headings an escape tries, this far apart [rad] (10 deg): around a corner the body touches,
+// the clear headings span tens of degrees.
+constexpr double kHeadingStep = M_PI / 18.0;
+
 struct Point {
   double x, y;
 };
@@ -29,19 +33,14 @@ Point end_point(const slam::LaserScan& scan, std::size_t i) {
   return {scan.laser_offset.x + scan.ranges[i] * std::cos(a), scan.laser_offset.y + scan.ranges[i] * std::sin(a)};
 }
 
-}  // namespace
-
-bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMotion& motion) {
-  if (motion.v <= 0.0 || motion.distance <= 0.0) return false;
-  const double k = motion.omega / motion.v;
+// The disc driven along an arc of curvature k for `distance` from the origin facing +x:
+// does it come nearer than `radius` to an end point, and nearer than that point is now?
+bool sweeps_into(const std::vector<Point>& ends, double radius, double k, double distance) {
   std::vector<Point> centres;
-  for (double s = kStep; s < motion.distance + kStep; s += kStep)
-    centres.push_back(centre_after(std::min(s, motion.distance), k));
+  for (double s = kStep; s < distance + kStep; s += kStep) centres.push_back(centre_after(std::min(s, distance), k));
   const double r2 = radius * radius;
-  const double near2 = (motion.distance + radius) * (motion.distance + radius);
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    if (!scan.is_return(i)) continue;
-    const Point p = end_point(scan, i);
+  const double near2 = (distance + radius) * (distance + radius);
+  for (const Point& p : ends) {
     const double now2 = p.x * p.x + p.y * p.y;
     if (now2 > near2) continue;  // out of reach of this motion
     for (const Point& c : centres) {
@@ -50,6 +49,50 @@ bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMoti
     }
   }
   return false;
+}
+
+// The returns of `scan` in the robot frame turned by -heading: the frame of a robot that
+// has turned to `heading`.
+std::vector<Point> returns_facing(const slam::LaserScan& scan, double heading) {
+  const double c = std::cos(heading), s = std::sin(heading);
+  std::vector<Point> ends;
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (!scan.is_return(i)) continue;
+    const Point p = end_point(scan, i);
+    ends.push_back({c * p.x + s * p.y, -s * p.x + c * p.y});
+  }
+  return ends;
+}
+
+// Is `heading` (robot frame) within the bearings the scan covers?
+bool seen(const slam::LaserScan& scan, double heading) {
+  if (scan.ranges.empty()) return false;
+  const double span = scan.angle_increment * static_cast<double>(scan.ranges.size());
+  if (span >= 2.0 * M_PI - 1e-6) return true;
+  const double from_first = std::remainder(heading - scan.laser_offset.theta - scan.angle_min, 2.0 * M_PI);
+  const double wrapped = from_first < 0 ? from_first + 2.0 * M_PI : from_first;
+  return wrapped <= span;
+}
+
+}  // namespace
+
+bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMotion& motion) {
+  if (motion.v <= 0.0 || motion.distance <= 0.0) return false;
+  return sweeps_into(returns_facing(scan, 0.0), radius, motion.omega / motion.v, motion.distance);
+}
+
+std::optional<double> clear_heading(const slam::LaserScan& scan, double radius, double distance, double preferred) {
+  // Nearest first: preferred, then 10 deg either side, 20 deg, ... up to half a turn.
+  const int steps = static_cast<int>(M_PI / kHeadingStep);
+  for (int k = 0; k <= steps; ++k) {
+    for (const int sign : {1, -1}) {
+      const double heading = std::remainder(preferred + sign * k * kHeadingStep, 2.0 * M_PI);
+      if (!seen(scan, heading)) continue;
+      if (!sweeps_into(returns_facing(scan, heading), radius, 0.0, distance)) return heading;
+      if (k == 0) break;
+    }
+  }
+  return std::nullopt;
 }
 
 bool corridor_holds_return(const slam::LaserScan& scan, double half_width, double reach) {

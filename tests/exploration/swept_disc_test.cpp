@@ -75,5 +75,52 @@ TEST(SweptDisc, AReturnTheRobotMovesAwayFromDoesNotCount) {
   EXPECT_FALSE(sweeps_into({0.0, 0.0}, 0.0, 0.0));    // not moving
 }
 
+// A scan of every beam at `count` bearings from angle_min, `increment` apart, reading far
+// (no return) except the given end points, each on its nearest beam.
+slam::LaserScan fan_of(const std::vector<Return>& points, double angle_min, double increment, int count) {
+  slam::LaserScan scan;
+  scan.max_range = 30.0;
+  scan.angle_min = angle_min;
+  scan.angle_increment = increment;
+  scan.ranges.assign(static_cast<std::size_t>(count), 30.0F);
+  for (const Return& p : points) {
+    const double from_first = std::remainder(std::atan2(p.y, p.x) - angle_min, 2.0 * M_PI);
+    const long beam = std::lround((from_first < 0 ? from_first + 2.0 * M_PI : from_first) / increment);
+    if (beam >= 0 && beam < count)
+      scan.ranges[static_cast<std::size_t>(beam)] = static_cast<float>(std::hypot(p.x, p.y));
+  }
+  return scan;
+}
+
+TEST(SweptDisc, TheClearHeadingNearestThePreferredOneIsFound) {
+  const double step = M_PI / 360.0;
+  // Nothing near: the preferred heading itself.
+  EXPECT_NEAR(*clear_heading(fan_of({}, -M_PI, step, 720), 0.1, 0.25, 0.3), 0.3, 1e-12);
+  // A corner 2 cm from the body, ahead and to the right: straight on is blocked, the way out
+  // turns left, and not further than it must.
+  const slam::LaserScan corner = fan_of({{0.09, -0.07}, {0.1, -0.08}, {0.2, -0.08}}, -M_PI, step, 720);
+  ASSERT_TRUE(disc_sweeps_into(corner, 0.1, {0.1, 0.0, 0.25}));
+  const auto out = clear_heading(corner, 0.1, 0.25, 0.0);
+  ASSERT_TRUE(out.has_value());
+  EXPECT_GT(*out, 0.0);
+  EXPECT_LT(*out, M_PI / 2);
+}
+
+TEST(SweptDisc, NoHeadingIsClearInsideARingOfWalls) {
+  std::vector<Return> ring;
+  for (int k = 0; k < 72; ++k) ring.push_back({0.12 * std::cos(k * M_PI / 36), 0.12 * std::sin(k * M_PI / 36)});
+  EXPECT_FALSE(clear_heading(fan_of(ring, -M_PI, M_PI / 360.0, 720), 0.1, 0.25, 0.0).has_value());
+}
+
+TEST(SweptDisc, AHalfCircleLaserOffersNoHeadingBehindTheRobot) {
+  // A 180 deg laser facing forward; a wall right in front: only headings the scan covers
+  // (within 90 deg either side) are offered, never the unseen way back.
+  std::vector<Return> wall;
+  for (double y = -1.0; y <= 1.0; y += 0.01) wall.push_back({0.12, y});
+  const auto out = clear_heading(fan_of(wall, -M_PI / 2, M_PI / 180.0, 181), 0.1, 0.25, 0.0);
+  ASSERT_TRUE(out.has_value());
+  EXPECT_LE(std::abs(*out), M_PI / 2 + 1e-9);
+}
+
 }  // namespace
 }  // namespace lookahead::exploration

@@ -24,6 +24,7 @@
 #include "lookahead/exploration/prediction_targets.hpp"
 #include "lookahead/exploration/reactive_stop.hpp"
 #include "lookahead/exploration/recovery_behaviour.hpp"
+#include "lookahead/exploration/stop_escape.hpp"
 #include "lookahead/exploration/stuck_clock.hpp"
 #include "lookahead/exploration/target_selection.hpp"
 #include "lookahead/exploration/target_strategy.hpp"
@@ -51,6 +52,7 @@ struct MissionStatistics {
   double planning_time = 0.0;  ///< wall clock [s]
   int collisions = 0;
   int safety_stops = 0;  ///< steps the reactive stop held the robot
+  int stop_escapes = 0;  ///< turn-then-creep escapes from a lasting stop (stop_escape.hpp)
   int backtracks = 0;    ///< escapes along the robot's own trail (no frontier was reachable)
   int squeezes = 0;      ///< paths planned without the safety margin
   int kept_paths = 0;    ///< paths the margin closed, kept while the body fits (the replan went the long way or failed)
@@ -121,6 +123,8 @@ class Mission {
   SelectionInputs selection_inputs();
   void count(const Selection& s);
   void act();
+  void hold_at_stop();  ///< the reactive stop held the robot this step
+  [[nodiscard]] EscapeLimits escape_limits() const;
   void record();
   void check_end();
   bool goal_still_useful() const;
@@ -180,6 +184,7 @@ class Mission {
   int unreachable_streak_ = 0;                                  ///< failed selections in a row
   bool last_unreachable_ = false;  ///< the last failed selection found no path to a frontier goal
   ReactiveStop stop_;
+  StopEscape escape_;  ///< turn-then-creep out of a corner the stop holds the robot at
   bool map_changed_ = false;
   bool visiting_predicted_ = false;  ///< the goal was chosen with every frontier predicted
   bool path_blocked_ = false;        ///< the follower was dropped because new walls block its path

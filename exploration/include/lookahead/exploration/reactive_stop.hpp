@@ -31,6 +31,9 @@ class ReactiveStop {
   void clear() { held_ = 0; }  ///< the robot drives on, or has no path
   /// The stop held the robot at its last step.
   [[nodiscard]] bool holding() const { return held_ > 0; }
+  /// The hold has lasted long enough for a turn-then-creep escape (stop_escape.hpp), half
+  /// the time before the path is given up.
+  [[nodiscard]] bool escape_due() const;
 
  private:
   int held_ = 0;  ///< consecutive steps the stop has held the robot

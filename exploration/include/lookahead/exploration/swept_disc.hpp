@@ -5,6 +5,8 @@
 // turns around a door jamb on an arc, and a straight corridor misses the jamb beside it.
 #pragma once
 
+#include <optional>
+
 #include "lookahead/slam/sensor/laser_scan.hpp"
 
 namespace lookahead::exploration {
@@ -22,6 +24,12 @@ struct DiscMotion {
 /// a wall the robot is driving into. Walls beside the body that the motion does not approach
 /// do not count, so the robot may drive along a jamb 1 cm away.
 bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMotion& motion);
+
+/// The heading [rad, robot frame] nearest `preferred` (tried 10 deg apart, either side)
+/// along which the disc drives `distance` [m] straight without sweeping into a return,
+/// among the headings the scan covers; none when every one is blocked. The way out of a
+/// corner the body touches: the robot turns to it on the spot and creeps (stop_escape.hpp).
+std::optional<double> clear_heading(const slam::LaserScan& scan, double radius, double distance, double preferred);
 
 /// True when a laser end point of `scan` lies ahead of the robot (x > 0) within `reach` [m]
 /// and less than `half_width` [m] to either side: the straight corridor the reactive stop
