@@ -18,6 +18,7 @@
 #include "lookahead/exploration/mission_config.hpp"
 #include "lookahead/exploration/study_plan.hpp"
 #include "lookahead/slam/io/parse_error.hpp"
+#include "lookahead/slam/io/provenance.hpp"
 
 namespace lookahead::exploration {
 namespace {
@@ -231,10 +232,14 @@ std::optional<StudyRunResult> read_finished_run(const std::string& dir, const st
   const fs::path d(dir);
   if (!fs::exists(d / "run.json") || read_text(d / "run_config.yaml") != config_text) return std::nullopt;
   try {
+    // A run made by another build of lookahead is run again: the same options may decide
+    // differently in other code, and a study must not mix the two.
+    const std::string json = read_text(d / "run.json");
+    if (nlohmann::json::parse(json).at("provenance").at("commit") != slam::provenance(1).commit) return std::nullopt;
     StudyRunResult r;
     r.finished = true;
     r.reused = true;
-    r.summary = summary_from_json(read_text(d / "run.json"));
+    r.summary = summary_from_json(json);
     r.curve = read_curve(d / "coverage.csv");
     read_study_run_json(read_text(d / "study_run.json"), r);
     return r;

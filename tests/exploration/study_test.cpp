@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "lookahead/exploration/study_report.hpp"
@@ -209,6 +210,20 @@ TEST(Study, TinyStudyWritesTablesAndResumes) {
   other_office.worlds[0].spec.seed = 2;
   EXPECT_FALSE(read_finished_run(run0, run_config_text(other_office, plan_runs(other_office)[0])));
   EXPECT_TRUE(read_finished_run(run0, run_config_text(spec, plan_runs(spec)[0])));
+
+  // A run of another build (another commit in run.json's provenance) is run again.
+  std::string json;
+  {
+    std::ifstream in(run0 + "/run.json");
+    json.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string commit = "\"commit\": \"";
+  const std::size_t at = json.find(commit);
+  ASSERT_NE(at, std::string::npos);
+  json.insert(at + commit.size(), "another-build-");
+  std::ofstream(run0 + "/run.json") << json;
+  EXPECT_FALSE(read_finished_run(run0, run_config_text(spec, plan_runs(spec)[0])));
+  EXPECT_EQ(run_study(spec).executed, 1u);
 }
 
 }  // namespace
