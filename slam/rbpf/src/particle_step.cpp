@@ -7,7 +7,7 @@
 namespace lookahead::slam {
 
 bool draw_particle(const ParticleStepModels& m, const OccupancyGrid& map, Pose2& pose, double& log_weight,
-                   const Pose2& u, const PreparedScan& prepared, bool warm, std::mt19937_64& rng) {
+                   const Pose2& u, const PreparedScan& prepared, bool warm, std::mt19937_64& rng, Pose2* estimate) {
   const Pose2 predicted = pose.compose(u);
   const bool match_scan = warm && m.options.proposal.kind == ProposalKind::kScanMatch;
   MatchResult match;
@@ -17,11 +17,13 @@ bool draw_particle(const ParticleStepModels& m, const OccupancyGrid& map, Pose2&
     const ProposalDraw d =
         draw_improved_proposal(map, pose, u, match.pose, prepared, m.likelihood, m.motion, m.options.proposal, rng);
     pose = d.pose;
+    if (estimate) *estimate = d.mean;
     log_weight += m.options.weight_exponent * d.log_eta;
   } else {
     // The motion-model proposal, chosen or where scan matching fails (as Grisetti et al. do):
     // sample the odometry model and weight by the observation.
     pose = m.motion.sample(pose, u, rng);
+    if (estimate) *estimate = pose;
     if (warm) log_weight += m.options.weight_exponent * m.likelihood.log_likelihood(map, pose, prepared);
     failed = match_scan;
   }

@@ -122,13 +122,17 @@ void Rbpf::update_particle(Particle& p, const Pose2& u, const LaserScan& scan, c
                            std::mt19937_64& rng, bool& failed, HypothesisScore& on_hypotheses) const {
   const bool warm = stats_.updates > static_cast<std::size_t>(options_.warmup_updates);
   const ParticleStepModels models{options_, motion_, likelihood_, matcher_};
-  failed = draw_particle(models, p.map, p.pose, p.log_weight, u, prepared, warm, rng);
+  // The map takes the pose drawn from N(mu, Sigma) (Grisetti et al. 2007, sec. III-B); the
+  // trajectory keeps mu (eq. 12): the same hypothesis without the draw's noise, which would
+  // otherwise show as heading wobble between updates.
+  Pose2 estimate = p.pose;
+  failed = draw_particle(models, p.map, p.pose, p.log_weight, u, prepared, warm, rng, &estimate);
   // S2 reads the map before this scan (m_{k-1}): after insertion every end point is explored.
   if (warm && !hypotheses_.empty()) {
     on_hypotheses = score_on_hypotheses(p.map, p.pose, prepared, hypotheses_, p.hypothesis_offsets, likelihood_);
   }
   insert_scan(p.map, p.pose, scan, options_.insert);
-  p.trajectory = std::make_shared<TrajectoryNode>(p.pose, timestamps_.size() - 1, p.trajectory);
+  p.trajectory = std::make_shared<TrajectoryNode>(estimate, timestamps_.size() - 1, p.trajectory);
 }
 
 void Rbpf::update_particles(const LaserScan& scan) {

@@ -13,6 +13,8 @@
 namespace lookahead::slam {
 
 struct TrajectoryNode {
+  /// The pose estimate of this update: the mean of the proposal the particle's pose was drawn
+  /// from (the drawn pose itself went into the map).
   Pose2 pose;
   std::size_t scan_index = 0;  ///< the scan this pose belongs to
   std::shared_ptr<const TrajectoryNode> parent;

@@ -28,9 +28,12 @@ struct ParticleStepModels {
 
 /// Steps 1-2 only: moves `pose` through the proposal and adds the weight factor, leaving the
 /// map as it was (P-SLAM scores the hypotheses on m_{k-1} before the scan goes in). Returns
-/// true when a warm particle's scan match failed.
+/// true when a warm particle's scan match failed. `estimate`, when given, receives the mean
+/// of the improved proposal the pose was drawn from (the drawn pose where the motion model
+/// proposed it): the pose to report, without the draw's noise.
 bool draw_particle(const ParticleStepModels& models, const OccupancyGrid& map, Pose2& pose, double& log_weight,
-                   const Pose2& u, const PreparedScan& prepared, bool warm, std::mt19937_64& rng);
+                   const Pose2& u, const PreparedScan& prepared, bool warm, std::mt19937_64& rng,
+                   Pose2* estimate = nullptr);
 
 /// Moves `pose` by odometry increment `u` through the proposal, adds the weight factor to
 /// `log_weight` (only when `warm`: a map with too few scans is not matched against) and

@@ -48,12 +48,14 @@ class Rbpf {
 
   [[nodiscard]] const std::vector<Particle>& particles() const { return particles_; }
   [[nodiscard]] std::size_t best_particle() const;
-  /// The best particle's pose for every scan added so far. A scan between updates is placed
-  /// where it matched on the best particle's map (else by odometry), with the correction the
-  /// next update makes spread along the way (interpolated_trajectory.hpp).
+  /// The best particle's pose for every scan added so far: at an update the mean of the
+  /// proposal its pose was drawn from (Grisetti et al. 2007, eq. 12). A scan between updates
+  /// is placed where it matched on the best particle's map (else by odometry), with the
+  /// correction the next update makes spread along the way (interpolated_trajectory.hpp).
   [[nodiscard]] std::vector<Pose2> best_trajectory() const;
-  /// The best particle's estimate of the pose at the latest scan (its last updated pose
-  /// moved by the scans matched since): what a robot in the loop plans from.
+  /// The best particle's estimate of the pose at the latest scan (its last drawn pose, the
+  /// one its map was built with, moved by the scans matched since): what a robot in the loop
+  /// plans from on that map.
   [[nodiscard]] Pose2 current_pose() const;
   /// The weighted mean of the particles' poses (circular mean of the headings), moved by the
   /// motion matched since the last update: the "final particle filter pose" of the SegSLAM paper's
