@@ -33,14 +33,19 @@ Point end_point(const slam::LaserScan& scan, std::size_t i) {
   return {scan.laser_offset.x + scan.ranges[i] * std::cos(a), scan.laser_offset.y + scan.ranges[i] * std::sin(a)};
 }
 
-// The disc driven along an arc of curvature k for `distance` from the origin facing +x:
-// does it come nearer than `radius` to an end point, and nearer than that point is now?
-bool sweeps_into(const std::vector<Point>& ends, double radius, double k, double distance) {
+// A robot turned to `heading` (robot frame) drives its disc along an arc of curvature k for
+// `distance`: does the disc come nearer than `radius` to an end point of `scan`, and nearer
+// than that point is now? The end points are turned into the robot's new frame one by one.
+bool sweeps_into(const slam::LaserScan& scan, double heading, double radius, double k, double distance) {
   std::vector<Point> centres;
   for (double s = kStep; s < distance + kStep; s += kStep) centres.push_back(centre_after(std::min(s, distance), k));
   const double r2 = radius * radius;
   const double near2 = (distance + radius) * (distance + radius);
-  for (const Point& p : ends) {
+  const double cos_h = std::cos(heading), sin_h = std::sin(heading);
+  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (!scan.is_return(i)) continue;
+    const Point e = end_point(scan, i);
+    const Point p{cos_h * e.x + sin_h * e.y, -sin_h * e.x + cos_h * e.y};
     const double now2 = p.x * p.x + p.y * p.y;
     if (now2 > near2) continue;  // out of reach of this motion
     for (const Point& c : centres) {
@@ -49,19 +54,6 @@ bool sweeps_into(const std::vector<Point>& ends, double radius, double k, double
     }
   }
   return false;
-}
-
-// The returns of `scan` in the robot frame turned by -heading: the frame of a robot that
-// has turned to `heading`.
-std::vector<Point> returns_facing(const slam::LaserScan& scan, double heading) {
-  const double c = std::cos(heading), s = std::sin(heading);
-  std::vector<Point> ends;
-  for (std::size_t i = 0; i < scan.ranges.size(); ++i) {
-    if (!scan.is_return(i)) continue;
-    const Point p = end_point(scan, i);
-    ends.push_back({c * p.x + s * p.y, -s * p.x + c * p.y});
-  }
-  return ends;
 }
 
 // Is `heading` (robot frame) within the bearings the scan covers?
@@ -78,7 +70,7 @@ bool seen(const slam::LaserScan& scan, double heading) {
 
 bool disc_sweeps_into(const slam::LaserScan& scan, double radius, const DiscMotion& motion) {
   if (motion.v <= 0.0 || motion.distance <= 0.0) return false;
-  return sweeps_into(returns_facing(scan, 0.0), radius, motion.omega / motion.v, motion.distance);
+  return sweeps_into(scan, 0.0, radius, motion.omega / motion.v, motion.distance);
 }
 
 std::optional<double> clear_heading(const slam::LaserScan& scan, double radius, double distance, double preferred) {
@@ -88,7 +80,7 @@ std::optional<double> clear_heading(const slam::LaserScan& scan, double radius, 
     for (const int sign : {1, -1}) {
       const double heading = std::remainder(preferred + sign * k * kHeadingStep, 2.0 * M_PI);
       if (!seen(scan, heading)) continue;
-      if (!sweeps_into(returns_facing(scan, heading), radius, 0.0, distance)) return heading;
+      if (!sweeps_into(scan, heading, radius, 0.0, distance)) return heading;
       if (k == 0) break;
     }
   }
