@@ -330,7 +330,10 @@ void Mission::act() {
 
 void Mission::hold_at_stop() {
   // A hold that outlasts a map refresh may be a corner pinning the body: turn and creep out.
-  if (stop_.escape_due() && escape_.start(last_scan_, estimate(), escape_limits())) ++stats_.stop_escapes;
+  if (stop_.escape_due() && escape_.start(last_scan_, estimate(), escape_limits())) {
+    ++stats_.stop_escapes;
+    escape_spots_.push_back({estimate().x, estimate().y});
+  }
   // A stop that lasts gives the path up: the navigation replans (Follow -> Replan).
   if (stop_.hold(backtracking_ || squeezing_)) {
     follower_.reset();

@@ -54,6 +54,11 @@ slam::BgrImage render_mission(const Mission& mission, const std::string& title) 
                                                 [&](slam::CellIndex c) { return pm.predicted(mission.map(), c); });
   }
   points.push_back(frontier);
+  if (!mission.escape_spots().empty()) {
+    slam::PicturePoints escapes{{}, {0, 200, 255}, "stop escape (turn, then creep)", 4};
+    for (const planner::Point2& e : mission.escape_spots()) escapes.points.push_back({e.x, e.y});
+    points.push_back(escapes);
+  }
   if (mission.goal()) points.push_back({{{mission.goal()->x, mission.goal()->y}}, {255, 140, 0}, "goal", 5});
   return slam::render_map_picture(m, paths, points, title);
 }

@@ -90,6 +90,8 @@ class Mission {
   [[nodiscard]] const FrontierDetector& frontiers() const { return frontiers_; }
   [[nodiscard]] const std::optional<planner::Point2>& goal() const { return goal_; }
   [[nodiscard]] const planner::Path* current_path() const { return follower_ ? &follower_->path() : nullptr; }
+  /// Where the robot started a turn-then-creep escape from a lasting stop (map.png marks them).
+  [[nodiscard]] const std::vector<planner::Point2>& escape_spots() const { return escape_spots_; }
   [[nodiscard]] const MissionStatistics& statistics() const { return stats_; }
   /// Where the navigation state machine stands (navigation_state_machine.hpp).
   [[nodiscard]] NavState navigation_state() const { return nav_state_; }
@@ -185,6 +187,7 @@ class Mission {
   bool last_unreachable_ = false;  ///< the last failed selection found no path to a frontier goal
   ReactiveStop stop_;
   StopEscape escape_;  ///< turn-then-creep out of a corner the stop holds the robot at
+  std::vector<planner::Point2> escape_spots_;
   bool map_changed_ = false;
   bool visiting_predicted_ = false;  ///< the goal was chosen with every frontier predicted
   bool path_blocked_ = false;        ///< the follower was dropped because new walls block its path
