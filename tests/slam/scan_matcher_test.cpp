@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "lookahead/slam/rbpf/improved_proposal.hpp"
 #include "lookahead/slam/sensor/scan_inserter.hpp"
 #include "test_world.hpp"
@@ -31,6 +33,39 @@ TEST_F(ScanMatcherTest, LikelihoodPeaksAtTheTruePose) {
   EXPECT_GT(at_truth, model.log_likelihood(grid, {truth.x + 0.1, truth.y, truth.theta}, scan));
   EXPECT_GT(at_truth, model.log_likelihood(grid, {truth.x, truth.y - 0.1, truth.theta}, scan));
   EXPECT_GT(at_truth, model.log_likelihood(grid, {truth.x, truth.y, truth.theta + 0.05}, scan));
+}
+
+// The bilinear lookup reads the field between cell centres: one end point by a wall, moved a
+// millimetre at a time across a cell, scores in steps of a cell with the cell lookup and
+// anew at every millimetre with the bilinear one.
+TEST_F(ScanMatcherTest, TheBilinearFieldSeesSubCellShifts) {
+  PreparedScan one;
+  one.x = {scan.x.front()};
+  one.y = {scan.y.front()};
+  std::set<double> by_cell, bilinear;
+  for (int k = 0; k < 50; ++k) {
+    const Pose2 at{truth.x + 0.001 * k, truth.y + 0.001 * k, truth.theta};
+    by_cell.insert(model.log_likelihood(grid, at, one));
+    bilinear.insert(model.log_likelihood(grid, at, one, FieldLookup::kBilinear));
+  }
+  EXPECT_LE(by_cell.size(), 3u);  // two cell borders crossed at most
+  EXPECT_GE(bilinear.size(), 45u);
+  // Both peak at the true pose.
+  const double at_truth = model.log_likelihood(grid, truth, scan, FieldLookup::kBilinear);
+  EXPECT_GT(at_truth, model.log_likelihood(grid, {truth.x, truth.y + 0.1, truth.theta}, scan, FieldLookup::kBilinear));
+  EXPECT_GT(at_truth, model.log_likelihood(grid, {truth.x, truth.y, truth.theta + 0.05}, scan, FieldLookup::kBilinear));
+}
+
+// The bilinear field's peak sits where the cell centres put the walls (up to half a cell
+// from the true wall, as the cell lookup's): the same tolerance as the cell match.
+TEST_F(ScanMatcherTest, TheBilinearMatchRecoversAnOdometryError) {
+  const ScanMatcher matcher(ScanMatcherOptions{}, model);
+  const Pose2 start{truth.x + 0.15, truth.y - 0.1, truth.theta + 0.06};
+  const MatchResult r = matcher.match(grid, start, scan, 0.0, FieldLookup::kBilinear);
+  EXPECT_TRUE(r.ok);
+  EXPECT_NEAR(r.pose.x, truth.x, 0.03);
+  EXPECT_NEAR(r.pose.y, truth.y, 0.03);
+  EXPECT_NEAR(r.pose.theta, truth.theta, 0.01);
 }
 
 TEST_F(ScanMatcherTest, RecoversAnOdometryError) {

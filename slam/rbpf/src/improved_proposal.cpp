@@ -8,10 +8,18 @@
 
 namespace lookahead::slam {
 
-ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
-                                    const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
-                                    const OdometryMotionModel& motion, const ProposalOptions& options,
-                                    std::mt19937_64& rng) {
+namespace {
+
+// The Gaussian fitted to the 27 kernel points, in offsets from the mode.
+struct FittedProposal {
+  Eigen::Vector3d mu;
+  Eigen::Matrix3d sigma;
+  double log_eta = 0.0;
+};
+
+FittedProposal fit_proposal(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
+                            const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
+                            const OdometryMotionModel& motion, const ProposalOptions& options, FieldLookup lookup) {
   // K = 27 points on a 3x3x3 lattice centred on the mode; offsets kept relative to the mode
   // so angles never wrap inside the sums.
   std::array<Eigen::Vector3d, 27> offsets;
@@ -23,7 +31,7 @@ ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& prev
       for (int a = -1; a <= 1; ++a, ++k) {
         offsets[k] = {i * options.kernel_linear, j * options.kernel_linear, a * options.kernel_angular};
         const Pose2 x{mode.x + offsets[k].x(), mode.y + offsets[k].y(), normalize_angle(mode.theta + offsets[k].z())};
-        log_tau[k] = likelihood.log_likelihood(grid, x, scan) + motion.log_density(previous, u, x);
+        log_tau[k] = likelihood.log_likelihood(grid, x, scan, lookup) + motion.log_density(previous, u, x);
         max_log = std::max(max_log, log_tau[k]);
       }
     }
@@ -45,8 +53,25 @@ ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& prev
   const double fl = options.min_sigma_fraction * options.kernel_linear;
   const double fa = options.min_sigma_fraction * options.kernel_angular;
   sigma += Eigen::Vector3d(fl * fl, fl * fl, fa * fa).asDiagonal();
+  return {mu, sigma, max_log + std::log(eta)};
+}
 
-  const Eigen::Matrix3d l = sigma.llt().matrixL();
+}  // namespace
+
+Pose2 improved_proposal_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
+                             const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
+                             const OdometryMotionModel& motion, const ProposalOptions& options, FieldLookup lookup) {
+  const FittedProposal f = fit_proposal(grid, previous, u, mode, scan, likelihood, motion, options, lookup);
+  return {mode.x + f.mu.x(), mode.y + f.mu.y(), normalize_angle(mode.theta + f.mu.z())};
+}
+
+ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
+                                    const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
+                                    const OdometryMotionModel& motion, const ProposalOptions& options,
+                                    std::mt19937_64& rng) {
+  const FittedProposal f = fit_proposal(grid, previous, u, mode, scan, likelihood, motion, options, FieldLookup::kCell);
+  const Eigen::Vector3d& mu = f.mu;
+  const Eigen::Matrix3d l = f.sigma.llt().matrixL();
   std::normal_distribution<double> n(0.0, 1.0);
   const Eigen::Vector3d z(n(rng), n(rng), n(rng));
   const Eigen::Vector3d draw = mu + l * z;
@@ -54,7 +79,7 @@ ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& prev
   ProposalDraw out;
   out.mean = {mode.x + mu.x(), mode.y + mu.y(), normalize_angle(mode.theta + mu.z())};
   out.pose = {mode.x + draw.x(), mode.y + draw.y(), normalize_angle(mode.theta + draw.z())};
-  out.log_eta = max_log + std::log(eta);
+  out.log_eta = f.log_eta;
   return out;
 }
 

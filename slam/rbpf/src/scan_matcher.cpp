@@ -6,10 +6,10 @@
 namespace lookahead::slam {
 
 MatchResult ScanMatcher::match(const OccupancyGrid& grid, const Pose2& start, const PreparedScan& scan,
-                               double angular_reach) const {
+                               double angular_reach, FieldLookup lookup) const {
   MatchResult r;
   r.pose = start;
-  r.log_likelihood = model_.log_likelihood(grid, start, scan);
+  r.log_likelihood = model_.log_likelihood(grid, start, scan, lookup);
   r.evaluations = 1;
   double lin = options_.linear_step;
   // A first angular step of one rotation std of the odometry: a hill climb that starts
@@ -38,7 +38,7 @@ MatchResult ScanMatcher::match(const OccupancyGrid& grid, const Pose2& start, co
       double best_ll = r.log_likelihood;
       for (const Pose2& d : steps) {
         const Pose2 candidate{r.pose.x + d.x, r.pose.y + d.y, normalize_angle(r.pose.theta + d.theta)};
-        const double ll = model_.log_likelihood(grid, candidate, scan);
+        const double ll = model_.log_likelihood(grid, candidate, scan, lookup);
         ++r.evaluations;
         if (ll > best_ll) {
           best_ll = ll;

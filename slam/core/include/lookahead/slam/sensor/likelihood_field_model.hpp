@@ -25,6 +25,10 @@ struct LikelihoodOptions {
   double temperature = 0.3;
 };
 
+/// How an end point reads the distance field: the value of the cell it falls in, or the
+/// bilinear blend of the four cell centres around it (sub-cell precision, four reads).
+enum class FieldLookup { kCell, kBilinear };
+
 /// A scan reduced to the beam end points the model uses, in the laser frame.
 struct PreparedScan {
   std::vector<float> x, y;
@@ -38,7 +42,8 @@ class LikelihoodFieldModel {
   LikelihoodFieldModel(const LikelihoodOptions& options, const OccupancyGrid& like_grid);
 
   /// Tempered log p(z | x, m) of the scan from robot pose `robot` on `grid`.
-  [[nodiscard]] double log_likelihood(const OccupancyGrid& grid, const Pose2& robot, const PreparedScan& scan) const;
+  [[nodiscard]] double log_likelihood(const OccupancyGrid& grid, const Pose2& robot, const PreparedScan& scan,
+                                      FieldLookup lookup = FieldLookup::kCell) const;
   /// Share of end points within one sigma-ish of an obstacle (a match-quality figure).
   [[nodiscard]] double hit_ratio(const OccupancyGrid& grid, const Pose2& robot, const PreparedScan& scan) const;
   /// Tempered log-likelihood of one end point at world (wx, wy) on `grid`; `hit` tells
@@ -50,6 +55,10 @@ class LikelihoodFieldModel {
 
  private:
   LikelihoodOptions options_;
+  [[nodiscard]] double cell_log_likelihood(const OccupancyGrid& grid, int cx, int cy) const;
+  [[nodiscard]] double bilinear_log_likelihood(const OccupancyGrid& grid, const Pose2& laser,
+                                               const PreparedScan& scan) const;
+
   std::array<double, 256> log_by_dist2_{};  // indexed by squared cell distance
   double log_unknown_ = 0.0;
   int hit_dist2_ = 0;

@@ -51,6 +51,12 @@ struct ProposalDraw {
   double log_eta = 0.0;  ///< log of the weight factor eta
 };
 
+/// mu alone (eq. (12)), for a pose estimate that is not a particle's draw; `lookup` is how the
+/// kernel points read the distance field.
+Pose2 improved_proposal_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
+                             const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
+                             const OdometryMotionModel& motion, const ProposalOptions& options, FieldLookup lookup);
+
 ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
                                     const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
                                     const OdometryMotionModel& motion, const ProposalOptions& options,

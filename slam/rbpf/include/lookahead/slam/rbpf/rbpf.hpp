@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -70,7 +71,7 @@ class Rbpf {
   void initialize(const LaserScan& scan);
   bool motion_threshold_met(const LaserScan& scan) const;
   void track_between_updates(const LaserScan& scan);
-  [[nodiscard]] Pose2 tracked_motion() const;
+  [[nodiscard]] std::optional<Pose2> track_on(const Particle& p, const Pose2& guess, const LaserScan& scan) const;
   void update_particle(Particle& p, const Pose2& u, const LaserScan& scan, const PreparedScan& prepared,
                        std::mt19937_64& rng, bool& failed, HypothesisScore& predicted) const;
   void update_particles(const LaserScan& scan);
@@ -83,7 +84,8 @@ class Rbpf {
   LikelihoodFieldModel likelihood_;
   ScanMatcher matcher_;
   std::vector<Particle> particles_;
-  std::vector<Pose2> since_update_;  ///< per scan: the pose relative to the last update's
+  std::vector<Pose2> since_update_;    ///< per scan: pose relative to the best particle's drawn pose
+  std::vector<Pose2> since_estimate_;  ///< per scan: pose relative to its trajectory's last node
   std::vector<std::shared_ptr<const HypothesisMap>> hypotheses_;
   std::mt19937_64 rng_;
   Pose2 last_update_odometry_;

@@ -39,8 +39,9 @@ class ScanMatcher {
 
   /// Climbs from `start`. `angular_reach` [rad]: the first angular step is at least this
   /// (the odometry's rotation std), so a misread turn is within the first steps' reach.
+  /// `lookup`: how end points read the distance field (LikelihoodFieldModel::log_likelihood).
   [[nodiscard]] MatchResult match(const OccupancyGrid& grid, const Pose2& start, const PreparedScan& scan,
-                                  double angular_reach = 0.0) const;
+                                  double angular_reach = 0.0, FieldLookup lookup = FieldLookup::kCell) const;
 
  private:
   ScanMatcherOptions options_;
