@@ -25,7 +25,7 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
     "target selection: nearest | utility | advantage | rate | predictive | predictive-utility | "
     "predictive-advantage | predictive-rate");
   v("utility_lambda", o.utility_lambda, "utility = gain [m^2] - lambda * cost [m]");
-  v("rate_offset", o.rate_offset, "rate = gain [m^2] / (cost + offset) [m], > 0");
+  v("rate_offset", o.rate_offset, "rate = gain [m^2] / (2 cost - nearest cost + offset) [m], > 0");
   v("pose_source", o.pose_source, "slam (RBPF in the loop) | truth (map at the true pose)");
   v("seed", o.seed, "seeds the sensor, odometry, SLAM (filter.seed) and planner");
   v("time_limit", o.time_limit, "simulated seconds, > 0");

@@ -10,10 +10,24 @@
 namespace lookahead::exploration {
 namespace {
 
-TEST(GainRate, IsTheGainPerMetreWithTheOffsetOnThePath) {
+TEST(GainRate, IsTheGainPerMetreOfTheTripAndTheWayBack) {
   const FrontierCluster a = goal_at(1, 0);
-  EXPECT_DOUBLE_EQ(gain_rate({&a, 6.0, 30.0}, 4.0), 3.0);
-  EXPECT_DOUBLE_EQ(gain_rate({&a, 0.0, 30.0}, 4.0), 7.5);
+  // The nearest frontier itself: its path and the offset.
+  EXPECT_DOUBLE_EQ(gain_rate({&a, 6.0, 30.0}, 4.0, 6.0), 3.0);
+  EXPECT_DOUBLE_EQ(gain_rate({&a, 0.0, 30.0}, 4.0, 0.0), 7.5);
+  // 6 m beyond a frontier 2 m away: the 4 m past it are driven again to come back.
+  EXPECT_DOUBLE_EQ(gain_rate({&a, 6.0, 28.0}, 4.0, 2.0), 2.0);
+}
+
+// Rooms a few metres away against the corridor's far end with a little more gain per metre
+// of the way there (the numbers of a KTH office floor): the rooms are left for the far end
+// only if the way back to them is not counted.
+TEST(GainRate, FinishesTheRoomsNearbyBeforeTheFarEndOfTheCorridor) {
+  const FrontierCluster room = goal_at(5, 0), other_room = goal_at(7.5, 0), far = goal_at(25, 0);
+  const std::vector<Candidate> cands{{&room, 5.0, 92.0}, {&other_room, 7.5, 113.0}, {&far, 24.9, 318.0}};
+  EXPECT_EQ(GainRateStrategy(4.0, false).choose(cands), std::optional<std::size_t>(0));
+  // Per metre of the way there alone, the far end wins.
+  EXPECT_GT(318.0 / (24.9 + 4.0), 92.0 / (5.0 + 4.0));
 }
 
 TEST(GainRate, TakesARoomAFewMetresOnBeforeASliverAtArmsLength) {

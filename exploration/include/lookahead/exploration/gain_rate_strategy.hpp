@@ -6,6 +6,14 @@
 // every target costs besides its path (turning to it, the sensor's view from the goal) and
 // keeps a sliver at arm's length from outranking a room a few metres on.
 //
+// The metres are those of the trip and of the way back: every frontier is visited before the
+// map is complete, so a target beyond the nearest frontier costs its path now and, later, the
+// part of it beyond the nearest again to come back (cost + (cost - nearest cost)). Without
+// it, a corridor's far end with a little more gain per metre than the rooms beside the robot
+// wins, and the rooms wait for a crossing of the building at the end of the mission (KTH
+// plans, 23 plans x 3 seeds: 0.925 -> 0.902 of nearest-frontier's time to 95 %; 180 deg
+// laser 0.877 -> 0.855). When every frontier is far, the shared way cancels out.
+//
 // With prediction ("predictive-rate") the gain is seen through P-SLAM's look-ahead map
 // (Chang et al. 2007, sec. II-B): predicted walls stop the gain's rays, predicted free cells
 // still count as unexplored. A frontier into a small predicted room is worth its room, not
@@ -33,7 +41,8 @@ class GainRateStrategy : public TargetStrategy {
   bool predicted_gain_;
 };
 
-/// Candidate `c`'s gain rate [m^2 per m]: information_gain / (path_cost + offset).
-[[nodiscard]] double gain_rate(const Candidate& c, double offset);
+/// Candidate `c`'s gain rate [m^2 per m]: information_gain / (2 path_cost - nearest_cost +
+/// offset), where `nearest_cost` is the least path cost of all candidates.
+[[nodiscard]] double gain_rate(const Candidate& c, double offset, double nearest_cost);
 
 }  // namespace lookahead::exploration

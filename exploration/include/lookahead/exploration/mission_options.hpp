@@ -33,7 +33,7 @@ struct MissionOptions {
   std::string strategy = "nearest";  ///< target selection: nearest | utility | advantage | rate |
                                      ///< predictive[-utility|-advantage|-rate]
   double utility_lambda = 1.0;       ///< utility = gain [m^2] - lambda * cost [m]
-  double rate_offset = 4.0;          ///< rate = gain [m^2] / (cost + offset) [m], > 0
+  double rate_offset = 4.0;          ///< rate = gain [m^2] / (2 cost - nearest cost + offset) [m], > 0
   PoseSource pose_source = PoseSource::kSlam;
   std::uint64_t seed = 1;          ///< seeds the sensor, odometry, SLAM and planner
   double time_limit = 1800.0;      ///< simulated seconds, > 0
