@@ -112,6 +112,18 @@ void BM_Likelihood_Lookahead(benchmark::State& state) {
 }
 BENCHMARK(BM_Likelihood_Lookahead);
 
+// The bilinear lookup the scans between updates are tracked with: four reads per end point.
+void BM_Likelihood_Lookahead_Bilinear(benchmark::State& state) {
+  auto& f = fixture();
+  const LikelihoodFieldModel model(LikelihoodOptions{}, f.grid);
+  const PreparedScan scan = prepare_scan(f.probe, LikelihoodOptions{});
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(model.log_likelihood(f.grid, f.probe.odometry, scan, FieldLookup::kBilinear));
+  }
+  state.counters["beams"] = static_cast<double>(scan.x.size());
+}
+BENCHMARK(BM_Likelihood_Lookahead_Bilinear);
+
 void BM_Likelihood_Mrpt(benchmark::State& state) {
   auto& f = fixture();
   const auto& obs = f.mrpt_scans[kMapScans];
