@@ -55,17 +55,8 @@ double LikelihoodFieldModel::log_likelihood(const OccupancyGrid& grid, const Pos
   for (std::size_t i = 0; i < scan.x.size(); ++i) {
     const double wx = laser.x + c * scan.x[i] - s * scan.y[i];
     const double wy = laser.y + s * scan.x[i] + c * scan.y[i];
-    const CellIndex cell{static_cast<int>(std::floor(wx * inv_res)), static_cast<int>(std::floor(wy * inv_res))};
-    const GridTile* t = grid.tile(cell.x >> GridTile::kBits, cell.y >> GridTile::kBits);
-    if (t == nullptr) {
-      sum += log_unknown_;
-      continue;
-    }
-    const int i_cell = OccupancyGrid::local(cell);
-    const int d2 = t->dist2[i_cell];
-    sum += (d2 == GridTile::kFar && t->log_odds[i_cell] == GridTile::kUnknown)
-               ? log_unknown_
-               : log_by_dist2_[static_cast<std::size_t>(d2)];
+    sum += cell_log_likelihood(grid, static_cast<int>(std::floor(wx * inv_res)),
+                               static_cast<int>(std::floor(wy * inv_res)));
   }
   return sum;
 }
