@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "lookahead/exploration/distance_advantage_strategy.hpp"
+
 namespace lookahead::exploration {
 
 double gain_rate(const Candidate& c, double offset, double nearest_cost) {
@@ -13,16 +15,26 @@ double gain_rate(const Candidate& c, double offset, double nearest_cost) {
 std::optional<std::size_t> GainRateStrategy::choose(const std::vector<Candidate>& c) const {
   double nearest_cost = std::numeric_limits<double>::infinity();
   for (const Candidate& candidate : c) nearest_cost = std::min(nearest_cost, candidate.path_cost);
+  struct Rank {
+    bool own;     // the robot has the distance advantage on it (gain_rate_strategy.hpp)
+    double rate;  // gain per metre of the trip and the way back
+    double cost;  // ties (no gain anywhere) go to the nearer frontier
+  };
+  const auto rank = [&](std::size_t i) {
+    return Rank{distance_advantage(c, i) > 0.0, gain_rate(c[i], offset_, nearest_cost), c[i].path_cost};
+  };
+  const auto before = [](const Rank& a, const Rank& b) {
+    if (a.own != b.own) return a.own;
+    if (a.rate != b.rate) return a.rate > b.rate;
+    return a.cost < b.cost;
+  };
   std::optional<std::size_t> best;
-  double best_rate = 0.0;
+  Rank best_rank{};
   for (std::size_t i = 0; i < c.size(); ++i) {
-    const double rate = gain_rate(c[i], offset_, nearest_cost);
-    // Ties (no gain anywhere, as when every frontier's surroundings are seen) go to the
-    // nearer frontier.
-    const bool better = !best || rate > best_rate || (rate == best_rate && c[i].path_cost < c[*best].path_cost);
-    if (better) {
+    const Rank r = rank(i);
+    if (!best || before(r, best_rank)) {
       best = i;
-      best_rate = rate;
+      best_rank = r;
     }
   }
   return best;

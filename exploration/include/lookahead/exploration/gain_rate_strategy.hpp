@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Gain rate: the frontier that reveals the most unknown area per metre of travel,
-// gain / (cost + offset). It is the rate form of the utility of Gonzalez-Banos & Latombe
+// gain / (cost + offset), first among the frontiers that would otherwise be left behind (the
+// distance advantage, below). It is the rate form of the utility of Gonzalez-Banos & Latombe
 // (2002): a greedy explorer that maximises area per metre reaches a coverage level sooner
 // than one that trades area against metres at a fixed price. The offset stands for what
 // every target costs besides its path (turning to it, the sensor's view from the goal) and
-// keeps a sliver at arm's length from outranking a room a few metres on.
+// keeps a sliver at arm's length, with other frontiers beside it, from outranking a room a
+// few metres on.
 //
 // The metres are those of the trip and of the way back: every frontier is visited before the
 // map is complete, so a target beyond the nearest frontier costs its path now and, later, the
@@ -13,6 +15,15 @@
 // wins, and the rooms wait for a crossing of the building at the end of the mission (KTH
 // plans, 23 plans x 3 seeds: 0.925 -> 0.902 of nearest-frontier's time to 95 %; 180 deg
 // laser 0.877 -> 0.855). When every frontier is far, the shared way cancels out.
+//
+// Frontiers the robot has the distance advantage on (Ericson et al. 2025: it is nearer to
+// them, by path, than any other frontier is, in a straight line) come first, by rate among
+// themselves; the rate ranks the rest only when there is none. No later target brings the
+// robot back near such a frontier, so the rate's greed leaves it, a closet or a room's
+// corner, for a dedicated trip at the end: the rate strategies reached 90 % explored at
+// 0.75x nearest-frontier's time and then spent a fifth of the mission on the last 5 %
+// (KTH plans, 23 plans x 3 seeds: 0.906 -> 0.860 of nearest's time to 95 % with prediction,
+// 0.891 -> 0.851 without).
 //
 // With prediction ("predictive-rate") the gain is seen through P-SLAM's look-ahead map
 // (Chang et al. 2007, sec. II-B): predicted walls stop the gain's rays, predicted free cells
