@@ -180,7 +180,9 @@ def subset(study, out, strategies, seeds, plans, max_area='', laser=''):
         items = [i for i in items if re.search(r'label: (\S+)', i).group(1) in plans.split()]
     if max_area:  # the free area each world's comment states: "# W m x H m, A m^2 free"
         items = [i for i in items if int(re.search(r'(\d+) m\^2 free', i).group(1)) <= float(max_area)]
-    items = [re.sub(r'^(\S+)', lambda m: os.path.join(base, m.group(1)), i) for i in items]
+    generated = ('office', 'maze', 'corridor')  # built by code: a name, not a path
+    items = [re.sub(r'^(\S+)', lambda m: m.group(1) if m.group(1) in generated else os.path.join(base, m.group(1)), i)
+             for i in items]
     tail = 'strategies:' + tail
     if strategies.split():
         tail = re.sub(r'strategies: \[[^\]]*\]', 'strategies: [' + ', '.join(strategies.split()) + ']', tail)

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""bench/runs/prediction_study.py subset: LASER replaces the study's laser, and garbage in
-LASER stops the driver with a message naming the value before any mission runs."""
+"""bench/runs/prediction_study.py subset: LASER replaces the study's laser, garbage in LASER
+stops the driver with a message naming the value before any mission runs, and world files
+are re-rooted to the new study's folder while generated worlds keep their names."""
 import os
 import subprocess
 import sys
@@ -38,6 +39,22 @@ class LaserSetting(unittest.TestCase):
                 self.assertNotEqual(r.returncode, 0, bad)
                 self.assertIn(f'LASER "{bad}"', r.stderr, bad)
                 self.assertFalse(os.path.exists(out), bad)
+
+
+class WorldPaths(unittest.TestCase):
+    def test_files_are_re_rooted_and_generated_worlds_kept(self):
+        study = os.path.join(ROOT, 'config', 'study', 'buildings.yaml')
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, 'sub', 'study.yaml')
+            os.makedirs(os.path.dirname(out))
+            r = subprocess.run([sys.executable, SCRIPT, 'subset', study, out, 'nearest', '1',
+                                'office_2 intel_lab'], capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            names = [l.split('name: ')[1].split()[0] for l in open(out) if l.startswith('  - name: ')]
+            self.assertEqual(len(names), 2, names)
+            self.assertIn('office', names)
+            world = [n for n in names if n != 'office'][0]
+            self.assertTrue(os.path.isfile(os.path.join(os.path.dirname(out), world)), world)
 
 
 if __name__ == '__main__':

@@ -99,4 +99,21 @@ TEST(ConfigCli, BadFilesNameFileLineKeyAndValue) {
   fs::remove_all(dir);
 }
 
+// A map_server world in config/worlds/ is checked by the world loader: its size is reported,
+// and a bad value is named with file, line and key.
+TEST(ConfigCli, WorldFilesLoadThroughTheWorldLoader) {
+  Result r = run("config check " + (kSource / "config" / "worlds" / "intel.yaml").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("map_server world, 44.40 m x 42.40 m"), std::string::npos) << r.output;
+  const fs::path dir = fs::temp_directory_path() / "lookahead-config-cli-world";
+  fs::create_directories(dir / "worlds");
+  const fs::path bad = dir / "worlds" / "bad.yaml";
+  std::ofstream(bad) << "image: missing.pgm\nresolution: -0.05\norigin: [0, 0, 0]\n";
+  r = run("config check " + bad.string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.output.find("bad.yaml:2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("resolution"), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
 }  // namespace
