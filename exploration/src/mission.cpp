@@ -230,6 +230,7 @@ void Mission::refresh() {
   if (follower_ && !backtracking_ && !squeezing_ && !follower_->path_still_valid(costmap_, clearance)) {
     // New walls block the path: replan from here (to the same goal). A path the margin
     // closed but the body still fits stays at hand for the replan to compare with.
+    blocked_rest_ = follower_->remaining_length();
     if (!kept_on_body_ && follower_->path_still_valid(costmap_, Clearance::kBody))
       margin_blocked_ = std::move(follower_);
     follower_.reset();
@@ -336,6 +337,7 @@ void Mission::hold_at_stop() {
   }
   // A stop that lasts gives the path up: the navigation replans (Follow -> Replan).
   if (stop_.hold(backtracking_ || squeezing_)) {
+    if (follower_) blocked_rest_ = follower_->remaining_length();
     follower_.reset();
     path_blocked_ = true;
     ++stats_.replans;

@@ -123,6 +123,8 @@ NavEvent Mission::replan_step() {
 bool Mission::replan_current_goal() {
   path_blocked_ = false;
   std::unique_ptr<planner::PathFollower> blocked = std::move(margin_blocked_);
+  const double blocked_rest = blocked_rest_;
+  blocked_rest_ = -1.0;
   const Selection s = replan_to_goal(selection_inputs(), *goal_);
   count(s);
   const bool planned = s.outcome == SelectionOutcome::kPlanned;
@@ -141,6 +143,17 @@ bool Mission::replan_current_goal() {
   follower_ = std::make_unique<planner::PathFollower>(s.path, options_.follower);
   kept_on_body_ = false;
   escape_.arm();
+  if (blocked_rest >= 0.0) {
+    const slam::Pose2 p = estimate();
+    const double length = planner::path_length(s.path);
+    const StuckClock::Replan r =
+        stuck_clock_.replanned(time_, std::hypot(goal_->x - p.x, goal_->y - p.y), length, blocked_rest, path_length_);
+    if (r != StuckClock::Replan::kSameWay)
+      spdlog::debug("t {:.1f}: {} ({:.2f} m; the blocked path had {:.2f} m left)", time_,
+                    r == StuckClock::Replan::kForcedDetour ? "a forced detour restarts the stuck clock"
+                                                           : "the short way is back: the restart is undone",
+                    length, blocked_rest);
+  }
   return true;
 }
 
@@ -151,6 +164,7 @@ NavEvent Mission::select_step() {
   visiting_predicted_ = false;
   follower_.reset();
   margin_blocked_.reset();
+  blocked_rest_ = -1.0;
   goal_.reset();
   blacklist_.expire(time_);
   // Half through a door the margin closes, the ordinary costmap has no room where the robot

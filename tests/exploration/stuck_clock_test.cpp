@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The stuck clock: a straight line to the goal that shrinks is progress; a shorter path
-// left is progress only on a detour (or always, when asked), and its best is kept.
+// left is progress only on a detour (or always, when asked), and its best is kept; a replan
+// onto a much longer way restarts it (at most twice per goal) until the short way is back.
 #include "lookahead/exploration/stuck_clock.hpp"
 
 #include <gtest/gtest.h>
@@ -64,6 +65,57 @@ TEST(StuckClock, CountingThePathAlwaysAppliesFromThen) {
   EXPECT_FALSE(clock.stuck(31.0, 2.0, 6.5, 2.0));  // 6.5 < 7.8: progress from 8 m
   EXPECT_FALSE(clock.stuck(60.0, 2.0, 6.5, 2.0));
   EXPECT_TRUE(clock.stuck(62.0, 2.0, 6.5, 2.0));
+}
+
+// The way through a room's unknown side ends at a wall the robot sees from inside: 6.5 m
+// were left, the replan goes round through the door, 9.5 m. Driving it leads away from the
+// goal (3.5 m -> 5 m -> 3.5 m in a straight line) while its path left shrinks.
+bool stuck_round_the_door(bool forced) {
+  StuckClock clock({30.0, false, true});
+  clock.start(0.0, 3.5, 6.5, 0.0);
+  EXPECT_FALSE(clock.stuck(2.0, 3.2, 6.2, 0.3));
+  if (forced) EXPECT_EQ(clock.replanned(3.0, 3.6, 9.5, 6.5, 0.5), StuckClock::Replan::kForcedDetour);
+  for (int t = 4; t <= 45; ++t) {
+    const double driven = 0.5 + 0.2 * (t - 3);
+    const double distance = t <= 20 ? 3.6 + 0.08 * (t - 3) : 5.0 - 0.06 * (t - 20);
+    if (clock.stuck(t, distance, 9.5 - 0.2 * (t - 3), driven)) return true;
+  }
+  return false;
+}
+
+TEST(StuckClock, AForcedDetourRestartsTheClockAndItsPathCounts) {
+  EXPECT_TRUE(stuck_round_the_door(false));  // 9.5 m is no detour by the 10 m rule
+  EXPECT_FALSE(stuck_round_the_door(true));
+}
+
+TEST(StuckClock, ASwapBetweenSimilarWaysIsNoForcedDetour) {
+  StuckClock clock({30.0, false, true});
+  clock.start(0.0, 8.0, 13.7, 0.0);
+  EXPECT_EQ(clock.replanned(5.0, 8.0, 15.2, 13.7, 1.0), StuckClock::Replan::kSameWay);  // 15.2 < 1.2 x 13.7 + 1
+  EXPECT_TRUE(clock.stuck(31.0, 8.0, 14.0, 2.0));
+}
+
+// A door the margin flickers on: the short way (7 m) closes, the way round (11 m) restarts
+// the clock, the short way opens again: the robot is measured as if it had never left it.
+TEST(StuckClock, TheShortWayBackUndoesTheRestart) {
+  StuckClock clock({30.0, false, true});
+  clock.start(0.0, 5.0, 7.0, 0.0);
+  EXPECT_EQ(clock.replanned(20.0, 5.0, 11.0, 7.0, 1.0), StuckClock::Replan::kForcedDetour);
+  EXPECT_FALSE(clock.stuck(31.0, 5.0, 10.5, 1.5));  // restarted at 20 s, and 10.5 m is progress
+  EXPECT_EQ(clock.replanned(33.0, 5.0, 7.0, 10.5, 1.8), StuckClock::Replan::kWayBackOpened);
+  EXPECT_TRUE(clock.stuck(34.0, 5.0, 7.0, 2.0));  // no progress since 0 s
+}
+
+TEST(StuckClock, AtMostTwoForcedDetoursPerGoal) {
+  using R = StuckClock::Replan;
+  StuckClock clock({30.0, false, true});
+  clock.start(0.0, 3.0, 5.0, 0.0);
+  EXPECT_EQ(clock.replanned(10.0, 3.0, 8.0, 5.0, 1.0), R::kForcedDetour);
+  EXPECT_EQ(clock.replanned(20.0, 3.0, 12.0, 7.0, 2.0), R::kForcedDetour);
+  EXPECT_EQ(clock.replanned(30.0, 3.0, 16.0, 10.0, 3.0), R::kSameWay);
+  EXPECT_TRUE(clock.stuck(51.0, 3.0, 16.0, 3.0));  // 31 s after the second restart
+  clock.start(60.0, 3.0, 5.0, 3.0);                // a new goal gets its two again
+  EXPECT_EQ(clock.replanned(61.0, 3.0, 8.0, 5.0, 3.0), R::kForcedDetour);
 }
 
 }  // namespace

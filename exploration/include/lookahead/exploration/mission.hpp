@@ -191,6 +191,7 @@ class Mission {
   bool map_changed_ = false;
   bool visiting_predicted_ = false;  ///< the goal was chosen with every frontier predicted
   bool path_blocked_ = false;        ///< the follower was dropped because new walls block its path
+  double blocked_rest_ = -1.0;       ///< [m] left of the path a block dropped; < 0: none
   std::size_t last_resamplings_ = 0, last_best_ = 0;
   slam::Pose2 last_refresh_pose_;
   /// Where scans went into the map since the last refresh: the bounding box of their poses.
