@@ -135,12 +135,17 @@ void Mission::sense() {
     log_->odometry(scan.odometry, 0.0, 0.0, time_);
     log_->scan(scan);
   }
+  // Explored means observed: coverage reads the cells the laser saw from where the robot
+  // truly was. Read off the SLAM map instead, a map stretched a few decimetres along a
+  // corridor (the scan matcher cannot fix position along it) would lose the cells at its
+  // ends that the robot saw; how well the SLAM map agrees with the world is measured
+  // apart (map_precision, map_recall, slam_position_error).
+  slam::insert_scan(truth_map_, robot_.pose(), scan, options_.slam.insert);
   if (rbpf_) {
     map_changed_ = rbpf_->add_scan(scan);
     if (map_changed_) sensed_.add(estimate());
     return;
   }
-  slam::insert_scan(truth_map_, robot_.pose(), scan, options_.slam.insert);
   sensed_.add(robot_.pose());
   // The map grows every scan; the costmap and frontiers follow at the filter's pace.
   const slam::Pose2 moved = last_refresh_pose_.between(robot_.pose());
@@ -355,14 +360,14 @@ void Mission::record() {
   }
   if (time_ >= next_metrics_) {
     next_metrics_ = time_ + options_.metrics_period;
-    const double explored = meter_.coverage(map());
+    const double explored = meter_.coverage(truth_map_);
     double with_predictions = explored;
     if (lookahead_) {
       // "Explored or correctly predicted": predicted free cells count where the world is
       // free. A measure of look-ahead mapping only; no end condition reads it.
       const PredictedMap& pm = lookahead_->predicted();
       const double occupied = options_.lookahead.predictor.features.occupied_threshold;
-      with_predictions = meter_.coverage(map(), [&](double x, double y) {
+      with_predictions = meter_.coverage(truth_map_, [&](double x, double y) {
         const slam::CellIndex c = pm.cells().cell_at(x, y);
         return pm.predicted(map(), c) && pm.cells().probability(c) < occupied && !world_.is_occupied(x, y);
       });

@@ -75,7 +75,7 @@ void summarize_final_map(const Mission& m, const PredictedMap& pm, double occupi
   s.final_predicted_area_inside = static_cast<double>(cells_inside) * res * res;
   s.final_predicted_accuracy_inside =
       cells_inside ? static_cast<double>(correct_inside) / static_cast<double>(cells_inside) : 0.0;
-  s.coverage_with_predictions = m.coverage_meter().coverage(m.map(), [&](double x, double y) {
+  s.coverage_with_predictions = m.coverage_meter().coverage(m.observed_map(), [&](double x, double y) {
     const slam::CellIndex c = pm.cells().cell_at(x, y);
     return pm.predicted(m.map(), c) && pm.cells().probability(c) < occupied && !m.world().is_occupied(x, y);
   });

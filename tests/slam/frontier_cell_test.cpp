@@ -8,7 +8,10 @@
 namespace lookahead::slam {
 namespace {
 
-constexpr int kFree = -1000, kWall = 3000, kUndecided = 100;
+// Log-odds x 1000: free (p 0.27), wall (p 0.95), undecided leaning free (p 0.43: a cell one
+// grazing beam crossed) and undecided leaning occupied (p 0.55: a wall cell hit once and
+// crossed twice).
+constexpr int kFree = -1000, kWall = 3000, kUndecided = -300, kErodedWall = 200;
 
 // A free 5 x 5 block, cells (0..4, 0..4), in never-seen space.
 OccupancyGrid free_block() {
@@ -71,6 +74,25 @@ TEST(FrontierCell, UndecidedBandCountsOnlyNearNeverSeenSpace) {
   for (int x = -3; x < 6; ++x)
     for (int y = -3; y < 0; ++y) g.add_log_odds({x, y}, kFree);
   EXPECT_FALSE(mission.is_frontier(g, {4, 2}));
+}
+
+TEST(FrontierCell, AnErodedWallIsNoWayOut) {
+  // Column 5 is a wall that beams grazed: its cells lean occupied but are undecided, with
+  // never-seen space behind it. Under the plain rule undecided cells never count; under the
+  // mission's rule they do only when they lean free.
+  OccupancyGrid g = free_block();
+  for (int y = 0; y < 5; ++y) g.add_log_odds({5, y}, kErodedWall);
+  const FrontierCellTest mission(mission_rule());
+  for (int y = 0; y < 5; ++y) EXPECT_FALSE(mission.is_frontier(g, {4, y})) << y;
+  // A gap in it: (5, 2) crossed often enough to be free. Its neighbours (5, 1) and (5, 3)
+  // still lean occupied, so the gap is the unseen inside of the wall, not a door.
+  g.add_log_odds({5, 2}, -1500);
+  ASSERT_TRUE(mission.is_free(g, {5, 2}));
+  EXPECT_FALSE(mission.is_frontier(g, {5, 2}));
+  // The same column leaning free (one grazing beam each) hides a way out: frontier.
+  OccupancyGrid crossed = free_block();
+  for (int y = 0; y < 5; ++y) crossed.add_log_odds({5, y}, kUndecided);
+  EXPECT_TRUE(mission.is_frontier(crossed, {4, 2}));
 }
 
 TEST(FrontierCell, ThresholdsOutOfRangeAreRejected) {

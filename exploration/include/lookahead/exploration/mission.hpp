@@ -82,6 +82,9 @@ class Mission {
   [[nodiscard]] double path_length() const { return path_length_; }
   [[nodiscard]] double coverage() const { return curve_.empty() ? 0.0 : curve_.back().coverage; }
   [[nodiscard]] const slam::OccupancyGrid& map() const;
+  /// What the laser observed, inserted at the true pose: coverage counts its free cells.
+  /// The robot's map() itself under pose_source truth.
+  [[nodiscard]] const slam::OccupancyGrid& observed_map() const { return truth_map_; }
   [[nodiscard]] slam::Pose2 estimate() const;
   [[nodiscard]] const slam::Pose2& truth() const { return robot_.pose(); }
   [[nodiscard]] const std::vector<slam::Pose2>& true_path() const { return true_path_; }
@@ -148,6 +151,8 @@ class Mission {
   LaserSimulator laser_;
   OdometryModel odometry_;
   std::unique_ptr<slam::Rbpf> rbpf_;
+  /// Every scan inserted at the true pose: the robot's map under pose_source truth, and
+  /// under slam the record of what the laser observed, which coverage counts.
   slam::OccupancyGrid truth_map_;
   ReachableArea reachable_;
   CoverageMeter meter_;

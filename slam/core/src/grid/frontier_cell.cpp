@@ -30,14 +30,17 @@ FrontierCellTest::FrontierCellTest(const FrontierCellRule& rule) : rule_(rule) {
 }
 
 // Unexplored is neither free nor occupied. With an undecided band, a cell one grazing beam
-// crossed (known but undecided) counts when it lies in the band at the edge of the seen
-// region, where such cells separate the free from the never-seen cells and would otherwise
-// hide a way out; an undecided cell deep in the known map is a blurred wall edge (pose
-// noise) and does not count, or frontier specks would line every wall.
+// crossed (known, undecided, its evidence leaning free) counts when it lies in the band at
+// the edge of the seen region, where such cells separate the free from the never-seen cells
+// and would otherwise hide a way out; an undecided cell deep in the known map is a blurred
+// wall edge (pose noise) and does not count, or frontier specks would line every wall. An
+// undecided cell whose evidence leans occupied was hit more than crossed: a wall that
+// grazing beams eroded (a heading error of a fraction of a degree carries a beam along a
+// wall's row of cells), not a way out.
 bool FrontierCellTest::is_unexplored(const OccupancyGrid& grid, CellIndex n) const {
   const int l = grid.raw_log_odds(n);
   if (l == GridTile::kUnknown) return true;
-  if (rule_.undecided_band < 0 || l < free_from_ || l >= occupied_from_) return false;
+  if (rule_.undecided_band < 0 || l < free_from_ || l > 0) return false;
   const int b = rule_.undecided_band;
   for (int dy = -b; dy <= b; ++dy)
     for (int dx = -b; dx <= b; ++dx)
@@ -53,10 +56,11 @@ bool FrontierCellTest::is_frontier(const OccupancyGrid& grid, CellIndex c) const
   if (!borders_unexplored || !rule_.skip_wall_cells) return borders_unexplored;
   // A free cell that touches a wall and unknown space is the unseen inside of that wall
   // (beams graze a wall and leave gaps between its hits), not a way into new space: going
-  // there can never clear it.
+  // there can never clear it. Undecided cells that lean occupied count as wall here: an
+  // eroded wall seen from a pose with some error is mostly such cells.
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx)
-      if (is_occupied(grid, {c.x + dx, c.y + dy})) return false;
+      if (leans_occupied(grid, {c.x + dx, c.y + dy})) return false;
   return true;
 }
 

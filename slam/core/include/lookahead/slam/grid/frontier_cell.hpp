@@ -13,10 +13,11 @@ namespace lookahead::slam {
 struct FrontierCellRule {
   double free_threshold = 0.35;      ///< a known cell below this occupancy is free, (0, 0.5)
   double occupied_threshold = 0.65;  ///< at or above this it is an obstacle, (0.5, 1)
-  /// Undecided cells (occupancy in [free, occupied)) this many cells (Chebyshev) from
-  /// never-seen space count as unexplored too; < 0: only never-seen cells do.
+  /// Undecided cells whose evidence leans free (occupancy in [free, 0.5]) this many cells
+  /// (Chebyshev) from never-seen space count as unexplored too; < 0: only never-seen cells do.
   int undecided_band = -1;
-  /// A free cell that touches an occupied one (8-neighbourhood) is not a frontier.
+  /// A free cell that touches a cell whose evidence leans occupied (occupancy > 0.5,
+  /// 8-neighbourhood) is not a frontier.
   bool skip_wall_cells = false;
 };
 
@@ -37,6 +38,10 @@ class FrontierCellTest {
 
  private:
   [[nodiscard]] bool is_unexplored(const OccupancyGrid& grid, CellIndex c) const;
+  [[nodiscard]] bool leans_occupied(const OccupancyGrid& grid, CellIndex c) const {
+    const int l = grid.raw_log_odds(c);
+    return l != GridTile::kUnknown && l > 0;
+  }
 
   FrontierCellRule rule_;
   // The thresholds as fixed-point log-odds: the first value whose probability reaches each.
