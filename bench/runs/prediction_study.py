@@ -4,12 +4,13 @@
 run.json). Standard library only.
 
   prediction_study.py report OUT          markdown on stdout
-  prediction_study.py subset STUDY OUT STRATEGIES SEEDS PLANS [MAX_AREA [LASER]]
+  prediction_study.py subset STUDY OUT STRATEGIES SEEDS PLANS [MAX_AREA [LASER [POSE]]]
                                           STUDY with only the named strategies, seeds and
                                           plan labels (space-separated; empty: all), only
-                                          plans of at most MAX_AREA m^2 free, and with LASER
+                                          plans of at most MAX_AREA m^2 free, with LASER
                                           "FOV_DEG RANGE_M" the laser's field of view and
-                                          range replaced (the Pioneer's: "180 8")
+                                          range replaced (the Pioneer's: "180 8"), and with
+                                          POSE (slam | truth) the pose source replaced
 
 Paired comparisons: per plan and seed, a strategy's time to 95 % of the reachable area
 explored over nearest's; the geometric mean of these ratios with a 95 % bootstrap interval
@@ -170,7 +171,9 @@ def laser_setting(laser):
     return fov_deg, max_range
 
 
-def subset(study, out, strategies, seeds, plans, max_area='', laser=''):
+def subset(study, out, strategies, seeds, plans, max_area='', laser='', pose=''):
+    if pose and pose not in ('slam', 'truth'):
+        sys.exit(f'POSE "{pose}": expected slam (the RBPF in the loop) or truth')
     text = open(study).read()
     base = os.path.relpath(os.path.dirname(os.path.abspath(study)), os.path.dirname(os.path.abspath(out)))
     head, rest = text.split('worlds:\n', 1)
@@ -194,13 +197,17 @@ def subset(study, out, strategies, seeds, plans, max_area='', laser=''):
         tail, n_range = re.subn(r'(\n\s+max_range: )\S+.*', lambda m: f'{m.group(1)}{max_range:g}', tail)
         if n_fov != 1 or n_range != 1:
             sys.exit(f'{study}: LASER needs exactly one mission.laser fov and max_range to replace')
+    if pose:
+        tail, n = re.subn(r'\npose_source: \S+', f'\npose_source: {pose}', tail)
+        if n != 1:
+            sys.exit(f'{study}: POSE needs exactly one top-level pose_source to replace')
     open(out, 'w').write(head + 'worlds:\n' + ''.join('  - name: ' + i for i in items) + tail)
 
 
 if __name__ == '__main__':
     if len(sys.argv) >= 3 and sys.argv[1] == 'report':
         report(sys.argv[2])
-    elif len(sys.argv) in (7, 8, 9) and sys.argv[1] == 'subset':
+    elif len(sys.argv) in (7, 8, 9, 10) and sys.argv[1] == 'subset':
         subset(*sys.argv[2:])
     else:
         sys.exit(__doc__)

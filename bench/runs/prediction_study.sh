@@ -9,17 +9,18 @@
 # Usage: bash bench/runs/prediction_study.sh [STUDY.yaml]
 #   STRATEGIES="nearest advantage" SEEDS="1 2" PLANS="kth_50055649 kth_50045369" pick a subset,
 #   MAX_AREA=800 only the plans of at most 800 m^2 free, LASER="180 8" the Pioneer's laser
-#   (field of view in degrees, range in metres) in place of the study's
-#   (written as OUT/study.yaml); JOBS=2 runs in parallel; LOOKAHEAD=/path/to/lookahead.
+#   (field of view in degrees, range in metres) in place of the study's, POSE=slam the RBPF
+#   in the loop (POSE=truth: mapping at the true pose) (written as OUT/study.yaml); JOBS=2
+#   runs in parallel; LOOKAHEAD=/path/to/lookahead.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source bench/runs/stamp.sh
 study=${1:-config/study/kth_all.yaml}
 out=out/study/$(basename "$study" .yaml)
 mkdir -p "$out"
-if [[ -n "${STRATEGIES:-}${SEEDS:-}${PLANS:-}${MAX_AREA:-}${LASER:-}" ]]; then
+if [[ -n "${STRATEGIES:-}${SEEDS:-}${PLANS:-}${MAX_AREA:-}${LASER:-}${POSE:-}" ]]; then
   python3 bench/runs/prediction_study.py subset "$study" "$out/study.yaml" \
-    "${STRATEGIES:-}" "${SEEDS:-}" "${PLANS:-}" "${MAX_AREA:-}" "${LASER:-}"
+    "${STRATEGIES:-}" "${SEEDS:-}" "${PLANS:-}" "${MAX_AREA:-}" "${LASER:-}" "${POSE:-}"
   study=$out/study.yaml
 fi
 stamp "$out"

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""bench/runs/prediction_study.py subset: LASER replaces the study's laser, garbage in LASER
-stops the driver with a message naming the value before any mission runs, and world files
-are re-rooted to the new study's folder while generated worlds keep their names."""
+"""bench/runs/prediction_study.py subset: LASER replaces the study's laser and POSE its pose
+source, garbage in either stops the driver with a message naming the value before any
+mission runs, and world files are re-rooted to the new study's folder while generated worlds
+keep their names."""
 import os
 import subprocess
 import sys
@@ -38,6 +39,31 @@ class LaserSetting(unittest.TestCase):
                 r = subset(bad, out)
                 self.assertNotEqual(r.returncode, 0, bad)
                 self.assertIn(f'LASER "{bad}"', r.stderr, bad)
+                self.assertFalse(os.path.exists(out), bad)
+
+
+class PoseSetting(unittest.TestCase):
+    def run_subset(self, pose, out):
+        return subprocess.run([sys.executable, SCRIPT, 'subset', STUDY, out, 'nearest', '1', '', '800', '', pose],
+                              capture_output=True, text=True)
+
+    def test_slam_replaces_the_pose_source(self):
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, 'study.yaml')
+            r = self.run_subset('slam', out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            text = open(out).read()
+            self.assertIn('\npose_source: slam\n', text)
+            self.assertNotIn('pose_source: truth', text)
+            self.assertIn('max_range: 12', text)  # the laser is left as it was
+
+    def test_garbage_is_rejected_naming_the_value(self):
+        for bad in ('SLAM', 'odometry', 'slam truth'):
+            with tempfile.TemporaryDirectory() as d:
+                out = os.path.join(d, 'study.yaml')
+                r = self.run_subset(bad, out)
+                self.assertNotEqual(r.returncode, 0, bad)
+                self.assertIn(f'POSE "{bad}"', r.stderr, bad)
                 self.assertFalse(os.path.exists(out), bad)
 
 
