@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git time clang-format
   libeigen3-dev libopencv-dev libompl-dev liboctomap-dev
-  libmrpt-dev mrpt-common mrpt-apps
+  libmrpt-dev libmrpt-ros1bridge-dev mrpt-common mrpt-apps
   librosbag-storage-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev python3-rosbag
   libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev nlohmann-json3-dev zlib1g-dev
   libboost-math-dev
