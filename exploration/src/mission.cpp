@@ -62,7 +62,7 @@ Mission::Mission(const World& world, const slam::Pose2& start, const MissionOpti
       odometry_(start, options.odometry),
       truth_map_(options.slam.grid),
       reachable_(reachable_free_area(world, {start.x, start.y}, options.robot.radius)),
-      meter_(world, reachable_, options.free_threshold),
+      meter_(world, reachable_),
       frontiers_(options.frontiers),
       blacklist_(options.blacklist),
       replan_failures_(options.blacklist),

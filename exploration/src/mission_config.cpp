@@ -38,7 +38,7 @@ void visit_robot_sections(MissionOptions& o, V&& v) {
   v("metrics_period", o.metrics_period, "coverage is sampled this often [s]");
   v("frame_period", o.frame_period, "animation frame every [s]; 0 = no animation");
   v("initial_turn", o.initial_turn, "turn in place at the start [rad]");
-  v("free_threshold", o.free_threshold, "a map cell below this occupancy is explored, (0, 0.5)");
+  v("free_threshold", o.free_threshold, "a map cell below this occupancy is free (frontiers), (0, 0.5)");
   v("recovery_order", o.recovery_order,
     "recovery behaviours tried in this order when no frontier can be planned to: comma-separated, each at most "
     "once, of backtrack | last_resort | second_chance | look_around");

@@ -6,8 +6,7 @@
 
 namespace lookahead::exploration {
 
-CoverageMeter::CoverageMeter(const World& world, const ReachableArea& area, double free_threshold)
-    : free_threshold_(free_threshold) {
+CoverageMeter::CoverageMeter(const World& world, const ReachableArea& area) {
   const int step = std::max(1, static_cast<int>(std::lround(0.1 / world.resolution())));
   for (int y = 0; y < world.height(); y += step) {
     for (int x = 0; x < world.width(); x += step) {
@@ -29,7 +28,9 @@ double CoverageMeter::coverage(const slam::OccupancyGrid& map,
   std::size_t known = 0;
   for (const auto& [x, y] : points_) {
     const slam::CellIndex c = map.cell_at(x, y);
-    if ((map.is_known(c) && map.probability(c) < free_threshold_) || (also_covered && also_covered(x, y))) ++known;
+    // Explored means observed, whatever the evidence says: a free cell beside a wall that the
+    // beam ends blur towards occupied was seen all the same, and no second look changes that.
+    if (map.is_known(c) || (also_covered && also_covered(x, y))) ++known;
   }
   return static_cast<double>(known) / static_cast<double>(points_.size());
 }

@@ -14,10 +14,10 @@
 namespace lookahead::exploration {
 
 /// Samples reachable free cells of the world (on a ~10 cm lattice) and counts those the
-/// robot's map knows as free.
+/// map has observed (any evidence, free or occupied).
 class CoverageMeter {
  public:
-  CoverageMeter(const World& world, const ReachableArea& area, double free_threshold);
+  CoverageMeter(const World& world, const ReachableArea& area);
   [[nodiscard]] double coverage(const slam::OccupancyGrid& map) const;  ///< in [0, 1]
   /// Coverage counting also the samples `also_covered(x, y)` accepts (predicted free cells).
   [[nodiscard]] double coverage(const slam::OccupancyGrid& map,
@@ -26,7 +26,6 @@ class CoverageMeter {
 
  private:
   std::vector<std::pair<double, double>> points_;
-  double free_threshold_;
 };
 
 struct CoverageSample {
