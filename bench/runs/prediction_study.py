@@ -22,6 +22,9 @@ import json, math, os, random, re, sys
 from collections import defaultdict
 
 SPEED = 0.2  # m/s, MissionOptions::robot.max_speed (the study files keep it)
+# With SLAM in the loop, a mission whose estimate was off by more than this on average (2.5
+# radii of the P2 robot) explored with a map that no longer fit the building.
+SLAM_LOST_M = 0.5
 
 
 def load(folder):
@@ -115,12 +118,22 @@ def short_report(runs):
     print('|---|---|---|---|---|---|---|')
     for r in sorted(short, key=lambda r: (r['world'], r['strategy'], r['seed'])):
         need = 0.95 * r['reachable_free_area_m2'] / rate / SPEED
-        if r['status'] == 'time_limit':
-            why = 'the plan needs more time than the limit' if need > r['simulated_time_s'] else 'time limit on a plan that fits in it'
-        else:
-            why = {'done': 'no frontier with a goal left', 'trapped': 'no reachable frontier',
-                   'collision': 'collision'}.get(r['status'], r['status'])
-        print(f"| {r['world']} | {r['strategy']} | {r['seed']} | {r['status']} | {r['coverage']:.3f} | {need:.0f} | {why} |")
+        print(f"| {r['world']} | {r['strategy']} | {r['seed']} | {r['status']} | {r['coverage']:.3f} | {need:.0f} | "
+              f"{why_short(r, need)} |")
+
+
+def why_short(r, need):
+    """Why a mission ended short of 95 %: its status, the plan's size against the time limit,
+    and a SLAM estimate that lost the robot."""
+    if r['status'] == 'time_limit':
+        why = 'the plan needs more time than the limit' if need > r['simulated_time_s'] else 'time limit on a plan that fits in it'
+    else:
+        why = {'done': 'no frontier with a goal left', 'trapped': 'no reachable frontier',
+               'collision': 'collision'}.get(r['status'], r['status'])
+    error = r.get('slam_position_error_mean_m')
+    if error is not None and error > SLAM_LOST_M:
+        why += f'; SLAM lost the robot (mean position error {error:.1f} m)'
+    return why
 
 
 def skip_report(runs):
