@@ -3,9 +3,15 @@
 // failure modes: a missing file and random bytes are ParseErrors; a truncated copy keeps the
 // scans before the break.
 #include <gtest/gtest.h>
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -156,6 +162,49 @@ TEST(MrptRawlogReader, TruncatedFileKeepsScansReadBeforeTheBreak) {
   EXPECT_GT(log.scans.size(), 50u);
   EXPECT_LT(log.scans.size(), 225u);
   EXPECT_GT(log.lines_read, log.scans.back().source_line);  // the broken record came later
+}
+
+// A plain rawlog of one 361-beam scan whose beam count is then rewritten to claim 2^31 - 16
+// beams: MRPT's deserialiser believes it and allocates gigabytes.
+std::vector<char> scan_claiming_too_many_beams(const std::string& path) {
+  {
+    mrpt::io::CFileOutputStream out(path);
+    auto archive = mrpt::serialization::archiveFrom(out);
+    mrpt::obs::CObservation2DRangeScan scan;
+    scan.aperture = 3.14159f;
+    scan.resizeScan(361);
+    for (std::size_t i = 0; i < 361; ++i) scan.setScanRange(i, 1.5f), scan.setScanRangeValidity(i, true);
+    archive << scan;
+  }
+  std::vector<char> bytes = read_bytes(path);
+  const std::uint32_t beams = 361, claimed = 0x7ffffff0;
+  const auto at = std::search(bytes.begin(), bytes.end(), reinterpret_cast<const char*>(&beams),
+                              reinterpret_cast<const char*>(&beams) + sizeof beams);
+  EXPECT_NE(at, bytes.end());
+  if (at != bytes.end()) std::memcpy(&*at, &claimed, sizeof claimed);
+  return bytes;
+}
+
+// The reader runs in a process that serves one read after another: a file it cannot parse,
+// and one that takes the reader process down (MRPT crashes on the claimed 2^31 beams, or
+// runs into the memory limit), each end in a ParseError naming the file, and the reads after
+// them still work (a new reader process takes over).
+TEST(MrptRawlogReader, ReadsGoOnAfterFilesTheReaderCannotTake) {
+  SKIP_WITHOUT_DATASET();
+  TempFile huge("lookahead_huge_claim_test.rawlog");
+  huge.write(scan_claiming_too_many_beams(huge.path()));
+  TempFile garbage("lookahead_garbage_then_good_test.rawlog");
+  garbage.write(std::vector<char>(512, 'x'));
+  for (const std::string& bad : {garbage.path(), huge.path(), garbage.path()}) {
+    try {
+      (void)read_mrpt_rawlog(bad);
+      ADD_FAILURE() << "expected ParseError for " << bad;
+    } catch (const ParseError& e) {
+      EXPECT_EQ(e.file(), bad);
+      if (bad == huge.path()) EXPECT_NE(std::string(e.what()).find("the reader"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(read_mrpt_rawlog(kOneLoop).scans.size(), 225u) << "after " << bad;
+  }
 }
 
 }  // namespace

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 // read_mrpt_rawlog(): the MRPT reader in a child process with limits (rawlog_guard.hpp).
-// The child writes one message to the pipe: 'L' and the log, or 'E' and a ParseError.
+// For each request the child answers with one message: 'L' and the log, or 'E' and a
+// ParseError.
 #include "rawlog_guard.hpp"
 
+#include <malloc.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,6 +16,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <new>
 #include <string>
 #include <system_error>
@@ -116,26 +120,6 @@ void put_error(Writer& w, const ParseError& e) {
   w.put(static_cast<std::uint64_t>(e.line())), w.put(e.field()), w.put(e.value()), w.put(e.reason());
 }
 
-void write_all(int fd, const std::string& bytes) {
-  for (std::size_t done = 0; done < bytes.size();) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return;
-    done += static_cast<std::size_t>(n);
-  }
-}
-
-std::string read_all(int fd) {
-  std::string out;
-  char buffer[1 << 16];
-  for (;;) {
-    const ssize_t n = ::read(fd, buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return out;
-    out.append(buffer, static_cast<std::size_t>(n));
-  }
-}
-
 bool under_address_sanitizer() {
 #if defined(__SANITIZE_ADDRESS__)
   return true;
@@ -145,36 +129,6 @@ bool under_address_sanitizer() {
 #endif
 #endif
   return false;
-}
-
-[[noreturn]] void run_child(int fd, const std::string& path, const LogReadOptions& options,
-                            const detail::RawlogLimits& limits) {
-  // ASan reserves terabytes of address space for its shadow: an RLIMIT_AS would stop it
-  // before the reader starts; the sanitizer's own allocator limit stands in under ASan.
-  if (!under_address_sanitizer()) {
-    const rlimit memory{limits.memory_bytes, limits.memory_bytes};
-    setrlimit(RLIMIT_AS, &memory);
-  }
-  const rlimit cpu{limits.cpu_seconds, limits.cpu_seconds + 5};
-  setrlimit(RLIMIT_CPU, &cpu);
-  Writer w;
-  try {
-    put_log(w, detail::read_mrpt_rawlog_unguarded(path, options));
-  } catch (const ParseError& e) {
-    w = Writer{};
-    put_error(w, e);
-  } catch (const std::bad_alloc&) {
-    w = Writer{};
-    put_error(w, ParseError(path, 0, "", "",
-                            "the file claims more memory than the reader's limit of " +
-                                std::to_string(limits.memory_bytes >> 20) + " MB (corrupt?)"));
-  } catch (const std::exception& e) {
-    w = Writer{};
-    put_error(w, ParseError(path, 0, "", "", std::string("cannot read: ") + e.what()));
-  }
-  write_all(fd, w.bytes());
-  ::close(fd);
-  std::_Exit(0);  // no destructors or atexit handlers of the parent's objects
 }
 
 LaserLog decode(const std::string& bytes, const std::string& path) {
@@ -202,6 +156,166 @@ std::string describe_exit(int status, const detail::RawlogLimits& limits) {
   return "the reader stopped without an answer (exit " + std::to_string(WEXITSTATUS(status)) + ")";
 }
 
+// One request to the reader process: the file, the options the reader uses and its limits.
+struct Request {
+  std::string path;
+  LogReadOptions options;
+  detail::RawlogLimits limits;
+};
+
+std::string encode(const Request& q) {
+  Writer w;
+  w.put(q.path), w.put(q.options.skip_bad_lines), w.put(q.options.no_return_range);
+  w.put(q.options.max_odometry_step), w.put(q.limits.memory_bytes), w.put(q.limits.cpu_seconds);
+  return w.bytes();
+}
+
+Request decode_request(const std::string& bytes) {
+  Request q;
+  Reader r(bytes, q.path);
+  r.get(q.path), r.get(q.options.skip_bad_lines), r.get(q.options.no_return_range);
+  r.get(q.options.max_odometry_step), r.get(q.limits.memory_bytes), r.get(q.limits.cpu_seconds);
+  return q;
+}
+
+// Messages on the socket: a 64-bit length, then the bytes. send() with MSG_NOSIGNAL, so a
+// reader that died makes the write fail instead of raising SIGPIPE in the caller.
+bool send_message(int fd, const std::string& bytes) {
+  Writer w;
+  w.put(bytes);
+  const std::string& out = w.bytes();
+  for (std::size_t done = 0; done < out.size();) {
+    const ssize_t n = ::send(fd, out.data() + done, out.size() - done, MSG_NOSIGNAL);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+bool read_exactly(int fd, char* out, std::size_t size) {
+  for (std::size_t done = 0; done < size;) {
+    const ssize_t n = ::read(fd, out + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// False when the other side closed or died before a whole message came.
+bool receive_message(int fd, std::string& bytes) {
+  std::uint64_t size = 0;
+  if (!read_exactly(fd, reinterpret_cast<char*>(&size), sizeof size)) return false;
+  if (size > (std::uint64_t{1} << 40)) return false;
+  bytes.resize(size);
+  return read_exactly(fd, bytes.data(), size);
+}
+
+// Reads one file under the request's limits. The CPU limit counts from what this process has
+// used so far, as it serves one request after another. True when the process may serve the
+// next request: after running out of memory or an unexpected exception it starts afresh.
+bool serve(int fd, const Request& q) {
+  // ASan reserves terabytes of address space for its shadow: an RLIMIT_AS would stop it
+  // before the reader starts; the sanitizer's own allocator limit stands in under ASan.
+  if (!under_address_sanitizer()) {
+    const rlimit memory{q.limits.memory_bytes, RLIM_INFINITY};
+    setrlimit(RLIMIT_AS, &memory);
+  }
+  rusage used{};
+  getrusage(RUSAGE_SELF, &used);
+  const auto spent = static_cast<rlim_t>(used.ru_utime.tv_sec + used.ru_stime.tv_sec);
+  const rlimit cpu{spent + q.limits.cpu_seconds, RLIM_INFINITY};
+  setrlimit(RLIMIT_CPU, &cpu);
+  Writer w;
+  bool healthy = true;
+  try {
+    put_log(w, detail::read_mrpt_rawlog_unguarded(q.path, q.options));
+  } catch (const ParseError& e) {
+    w = Writer{};
+    put_error(w, e);
+  } catch (const std::bad_alloc&) {
+    w = Writer{};
+    put_error(w, ParseError(q.path, 0, "", "",
+                            "the file claims more memory than the reader's limit of " +
+                                std::to_string(q.limits.memory_bytes >> 20) + " MB (corrupt?)"));
+    healthy = false;
+  } catch (const std::exception& e) {
+    w = Writer{};
+    put_error(w, ParseError(q.path, 0, "", "", std::string("cannot read: ") + e.what()));
+    healthy = false;
+  }
+  // The first byte says whether this process serves on ('K') or exits after this answer ('X').
+  const bool sent = send_message(fd, (healthy ? "K" : "X") + w.bytes());
+  malloc_trim(0);  // an idle reader gives the log's memory back
+  return sent && healthy;
+}
+
+[[noreturn]] void run_reader_process(int fd) {
+  std::string bytes;
+  while (receive_message(fd, bytes)) {
+    if (!serve(fd, decode_request(bytes))) break;
+  }
+  ::close(fd);
+  std::_Exit(0);  // no destructors or atexit handlers of the parent's objects
+}
+
+// The reader process: forked at the first read and kept for the next ones, so a caller
+// reading many files (the fuzzer, a study of rawlogs) forks once, not per file. A reader
+// that crashed, broke a limit or ran out of memory is replaced at the next read.
+class ReaderProcess {
+ public:
+  ~ReaderProcess() { stop(); }
+
+  // The answer to `q`, or the reason the reader died before giving one.
+  std::string read(const Request& q, std::string& death) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (pid_ < 0) start();
+    std::string answer;
+    if (send_message(fd_, encode(q)) && receive_message(fd_, answer) && !answer.empty()) {
+      if (answer.front() == 'X') stop();
+      return answer.substr(1);
+    }
+    death = describe_exit(stop(), q.limits);
+    return {};
+  }
+
+ private:
+  void start() {
+    int fds[2];
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) {
+      throw std::system_error(errno, std::generic_category(), "socketpair");
+    }
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+      ::close(fds[0]), ::close(fds[1]);
+      throw std::system_error(errno, std::generic_category(), "fork");
+    }
+    if (pid == 0) {
+      ::close(fds[0]);
+      run_reader_process(fds[1]);
+    }
+    ::close(fds[1]);
+    pid_ = pid;
+    fd_ = fds[0];
+  }
+
+  // Closes the socket (a live reader then exits) and returns the reader's exit status.
+  int stop() {
+    if (pid_ < 0) return 0;
+    ::close(fd_);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    pid_ = -1, fd_ = -1;
+    return status;
+  }
+
+  std::mutex mutex_;
+  pid_t pid_ = -1;
+  int fd_ = -1;
+};
+
 }  // namespace
 
 detail::RawlogLimits detail::rawlog_limits(std::uint64_t file_bytes) {
@@ -217,25 +331,11 @@ LaserLog read_mrpt_rawlog(const std::string& path, const LogReadOptions& options
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw ParseError(path, 0, "", "", "no such file (or not a regular file)");
   }
-  const detail::RawlogLimits limits = detail::rawlog_limits(std::filesystem::file_size(path, ec));
-  int fds[2];
-  if (::pipe(fds) != 0) throw std::system_error(errno, std::generic_category(), "pipe");
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    ::close(fds[0]), ::close(fds[1]);
-    throw std::system_error(errno, std::generic_category(), "fork");
-  }
-  if (pid == 0) {
-    ::close(fds[0]);
-    run_child(fds[1], path, options, limits);
-  }
-  ::close(fds[1]);
-  const std::string answer = read_all(fds[0]);
-  ::close(fds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (answer.empty()) throw ParseError(path, 0, "", "", describe_exit(status, limits));
+  static ReaderProcess reader;
+  const Request request{path, options, detail::rawlog_limits(std::filesystem::file_size(path, ec))};
+  std::string death;
+  const std::string answer = reader.read(request, death);
+  if (answer.empty()) throw ParseError(path, 0, "", "", death);
   return decode(answer, path);
 }
 

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // MRPT's deserialiser trusts the sizes a rawlog claims: a few flipped bytes can make it
 // allocate without end or loop. read_mrpt_rawlog() therefore runs the reader below in a
-// child process with an address-space and a CPU-time limit and takes the log back through
-// a pipe; a child that breaks a limit or crashes becomes a ParseError naming the file.
+// child process with an address-space and a CPU-time limit per file and takes the log back
+// through a socket; a child that breaks a limit or crashes becomes a ParseError naming the
+// file and is replaced at the next read. The child is forked once and serves the reads that
+// follow, so reading many files costs one fork, not one per file.
 #pragma once
 
 #include <cstdint>
