@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -212,14 +213,28 @@ bool receive_message(int fd, std::string& bytes) {
   return read_exactly(fd, bytes.data(), size);
 }
 
+// This process's address space [bytes] (/proc/self/statm: size in pages).
+rlim_t mapped_bytes() {
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  unsigned long pages = 0;
+  if (f != nullptr) {
+    if (std::fscanf(f, "%lu", &pages) != 1) pages = 0;
+    std::fclose(f);
+  }
+  return static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE));
+}
+
 // Reads one file under the request's limits. The CPU limit counts from what this process has
 // used so far, as it serves one request after another. True when the process may serve the
-// next request: after running out of memory or an unexpected exception it starts afresh.
+// next request: after an exception other than a ParseError or bad_alloc it starts afresh.
 bool serve(int fd, const Request& q) {
+  // The memory limit is room on top of what this process already maps (the caller's
+  // libraries, copied by fork), so a small file gets little room and a size it falsely
+  // claims fails at once instead of after MRPT has filled the memory it got.
   // ASan reserves terabytes of address space for its shadow: an RLIMIT_AS would stop it
   // before the reader starts; the sanitizer's own allocator limit stands in under ASan.
   if (!under_address_sanitizer()) {
-    const rlimit memory{q.limits.memory_bytes, RLIM_INFINITY};
+    const rlimit memory{mapped_bytes() + q.limits.memory_bytes, RLIM_INFINITY};
     setrlimit(RLIMIT_AS, &memory);
   }
   rusage used{};
@@ -234,12 +249,11 @@ bool serve(int fd, const Request& q) {
   } catch (const ParseError& e) {
     w = Writer{};
     put_error(w, e);
-  } catch (const std::bad_alloc&) {
+  } catch (const std::bad_alloc&) {  // unwound like any exception: the process serves on
     w = Writer{};
     put_error(w, ParseError(q.path, 0, "", "",
                             "the file claims more memory than the reader's limit of " +
                                 std::to_string(q.limits.memory_bytes >> 20) + " MB (corrupt?)"));
-    healthy = false;
   } catch (const std::exception& e) {
     w = Writer{};
     put_error(w, ParseError(q.path, 0, "", "", std::string("cannot read: ") + e.what()));
@@ -252,6 +266,12 @@ bool serve(int fd, const Request& q) {
 }
 
 [[noreturn]] void run_reader_process(int fd) {
+  // A crash in MRPT's deserialiser ends this process plainly: no handler the caller installed
+  // (a sanitizer's, a fuzzer's) reports it as the caller's, and no core file is written. The
+  // caller sees the signal and names the file.
+  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, SIG_DFL);
+  const rlimit no_core{0, 0};
+  setrlimit(RLIMIT_CORE, &no_core);
   std::string bytes;
   while (receive_message(fd, bytes)) {
     if (!serve(fd, decode_request(bytes))) break;
@@ -320,7 +340,7 @@ class ReaderProcess {
 
 detail::RawlogLimits detail::rawlog_limits(std::uint64_t file_bytes) {
   RawlogLimits l;
-  l.memory_bytes = std::max<std::uint64_t>(std::uint64_t{1} << 30, 64 * file_bytes);
+  l.memory_bytes = std::max<std::uint64_t>(std::uint64_t{64} << 20, 64 * file_bytes);
   l.memory_bytes = std::min(l.memory_bytes, limits::available_memory_bytes());
   l.cpu_seconds = std::max<std::uint64_t>(60, 10 * (file_bytes >> 20));
   return l;

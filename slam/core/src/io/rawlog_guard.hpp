@@ -17,8 +17,9 @@ namespace lookahead::slam::detail {
 /// The reader itself, in this process (mrpt_rawlog_reader.cpp).
 LaserLog read_mrpt_rawlog_unguarded(const std::string& path, const LogReadOptions& options);
 
-/// The child's limits for a file of `file_bytes`: memory 64x the file, at least 1 GB (and
-/// never over what the machine has); CPU time 10 s per MB, at least 60 s.
+/// The child's limits for a file of `file_bytes`: memory 64x the file on top of what the
+/// child already maps, at least 64 MB (never over what the machine has); CPU time 10 s per
+/// MB, at least 60 s.
 struct RawlogLimits {
   std::uint64_t memory_bytes = 0;
   std::uint64_t cpu_seconds = 0;
