@@ -6,6 +6,8 @@
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/serialization/CArchive.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -205,6 +207,30 @@ TEST(MrptRawlogReader, ReadsGoOnAfterFilesTheReaderCannotTake) {
     }
     EXPECT_EQ(read_mrpt_rawlog(kOneLoop).scans.size(), 225u) << "after " << bad;
   }
+}
+
+// A caller that forks after its first read: both copies go on reading at the same time, each
+// through a reader of its own (sharing the parent's would interleave their messages).
+TEST(MrptRawlogReader, AForkedCallerReadsThroughItsOwnReader) {
+  SKIP_WITHOUT_DATASET();
+  ASSERT_EQ(read_mrpt_rawlog(kOneLoop).scans.size(), 225u);
+  const auto read_many = [] {
+    int good = 0;
+    for (int k = 0; k < 10; ++k) {
+      try {
+        good += read_mrpt_rawlog(kOneLoop).scans.size() == 225u;
+      } catch (const std::exception&) {
+      }
+    }
+    return good;
+  };
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) std::_Exit(read_many() == 10 ? 0 : 1);
+  EXPECT_EQ(read_many(), 10);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the forked copy's reads failed";
 }
 
 }  // namespace

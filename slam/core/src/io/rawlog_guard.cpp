@@ -282,14 +282,21 @@ bool serve(int fd, const Request& q) {
 
 // The reader process: forked at the first read and kept for the next ones, so a caller
 // reading many files (the fuzzer, a study of rawlogs) forks once, not per file. A reader
-// that crashed, broke a limit or ran out of memory is replaced at the next read.
+// that crashed, ran over its CPU time or failed unexpectedly is replaced at the next read; so
+// is one inherited by a forked copy of the caller, which must not share the parent's socket.
 class ReaderProcess {
  public:
-  ~ReaderProcess() { stop(); }
+  ~ReaderProcess() {
+    if (owner_ == ::getpid()) stop();
+  }
 
   // The answer to `q`, or the reason the reader died before giving one.
   std::string read(const Request& q, std::string& death) {
     const std::lock_guard<std::mutex> lock(mutex_);
+    if (pid_ >= 0 && owner_ != ::getpid()) {  // the parent's reader: leave it to the parent
+      ::close(fd_);
+      pid_ = -1, fd_ = -1;
+    }
     if (pid_ < 0) start();
     std::string answer;
     if (send_message(fd_, encode(q)) && receive_message(fd_, answer) && !answer.empty()) {
@@ -318,6 +325,7 @@ class ReaderProcess {
     ::close(fds[1]);
     pid_ = pid;
     fd_ = fds[0];
+    owner_ = ::getpid();
   }
 
   // Closes the socket (a live reader then exits) and returns the reader's exit status.
@@ -332,8 +340,9 @@ class ReaderProcess {
   }
 
   std::mutex mutex_;
-  pid_t pid_ = -1;
-  int fd_ = -1;
+  pid_t pid_ = -1;    // the reader
+  int fd_ = -1;       // its socket
+  pid_t owner_ = -1;  // the process that forked it
 };
 
 }  // namespace
