@@ -43,6 +43,11 @@ for h in "${harnesses[@]}"; do
         -timeout=20 -print_final_stats=1 . "$OLDPWD/$corpus" >log.txt 2>&1); then
     status=1
     echo "fuzz_$h: FAILED, see $work/log.txt"
+  elif grep -q '^SUMMARY: [A-Za-z]*Sanitizer' "$work/log.txt"; then
+    # The rawlog guard's child dies of a finding without ending the run: its report is in the
+    # log (the child's crash-* file holds the input it was forked with, not the one it read).
+    status=1
+    echo "fuzz_$h: FAILED, a sanitizer finding in the guarded child, see $work/log.txt"
   fi
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$work/log.txt" | grep -o '[0-9]*$' || echo "?")
   echo "fuzz_$h: $runs inputs in $(( $(date +%s) - start )) s"

@@ -166,9 +166,8 @@ TEST(MrptRawlogReader, TruncatedFileKeepsScansReadBeforeTheBreak) {
   EXPECT_GT(log.lines_read, log.scans.back().source_line);  // the broken record came later
 }
 
-// A plain rawlog of one 361-beam scan whose beam count is then rewritten to claim 2^31 - 16
-// beams: MRPT's deserialiser believes it and allocates gigabytes.
-std::vector<char> scan_claiming_too_many_beams(const std::string& path) {
+// The bytes of a plain rawlog (written at `path`) of one valid 361-beam scan.
+std::vector<char> valid_scan_rawlog(const std::string& path) {
   {
     mrpt::io::CFileOutputStream out(path);
     auto archive = mrpt::serialization::archiveFrom(out);
@@ -178,7 +177,13 @@ std::vector<char> scan_claiming_too_many_beams(const std::string& path) {
     for (std::size_t i = 0; i < 361; ++i) scan.setScanRange(i, 1.5f), scan.setScanRangeValidity(i, true);
     archive << scan;
   }
-  std::vector<char> bytes = read_bytes(path);
+  return read_bytes(path);
+}
+
+// A rawlog of one 361-beam scan whose beam count is rewritten to claim 2^31 - 16 beams:
+// MRPT's deserialiser believes it and allocates gigabytes.
+std::vector<char> scan_claiming_too_many_beams(const std::string& path) {
+  std::vector<char> bytes = valid_scan_rawlog(path);
   const std::uint32_t beams = 361, claimed = 0x7ffffff0;
   const auto at = std::search(bytes.begin(), bytes.end(), reinterpret_cast<const char*>(&beams),
                               reinterpret_cast<const char*>(&beams) + sizeof beams);
@@ -231,6 +236,29 @@ TEST(MrptRawlogReader, AForkedCallerReadsThroughItsOwnReader) {
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the forked copy's reads failed";
+}
+
+// A scan whose direction flag holds the byte 2 (the rawlog fuzzer's UBSan finding): MRPT
+// copies the byte into a bool unchecked; the reader names the field instead of reading an
+// invalid bool. The flag is the byte after the class name, the version byte and the aperture.
+TEST(MrptRawlogReader, AScanDirectionOtherThanZeroOrOneIsABadRecord) {
+  TempFile file("lookahead_scan_direction_test.rawlog");
+  std::vector<char> bytes = valid_scan_rawlog(file.path());
+  const std::string name = "CObservation2DRangeScan";
+  const auto at = std::search(bytes.begin(), bytes.end(), name.begin(), name.end());
+  ASSERT_NE(at, bytes.end());
+  const auto flag = static_cast<std::size_t>(at - bytes.begin()) + name.size() + 1 + sizeof(float);
+  ASSERT_LT(flag, bytes.size());
+  ASSERT_EQ(bytes[flag], 1);  // MRPT's default: right to left
+  bytes[flag] = 2;
+  file.write(bytes);
+  try {
+    (void)read_mrpt_rawlog(file.path());
+    FAIL() << "expected ParseError";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.field(), "rightToLeft") << e.what();
+    EXPECT_EQ(e.value(), "2") << e.what();
+  }
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <limits>
@@ -138,6 +139,14 @@ class RawlogReader {
     scan.laser_offset = {obs.sensorPose.x(), obs.sensorPose.y(), normalize_angle(obs.sensorPose.yaw())};
     scan.odometry = odometry_;
     scan.source_line = record_;
+    // MRPT reads this flag as a byte straight from the file, so a corrupt file can leave a
+    // value in it that is no bool; its byte is read as what it is.
+    unsigned char right_to_left = 0;
+    static_assert(sizeof obs.rightToLeft == sizeof right_to_left);
+    std::memcpy(&right_to_left, &obs.rightToLeft, sizeof right_to_left);
+    if (right_to_left > 1) {
+      throw BadRecord{"rightToLeft", std::to_string(right_to_left), "the scan direction must be 0 or 1"};
+    }
     scan.ranges.resize(n);
     constexpr float no_return = std::numeric_limits<float>::infinity();
     for (std::size_t i = 0; i < n; ++i) {
@@ -145,7 +154,7 @@ class RawlogReader {
       const bool valid = obs.getScanRangeValidity(i) && r < options_.no_return_range;
       // A left-to-right scanner sweeps clockwise; storing it reversed keeps beams CCW from
       // angle_min, which is what every consumer of LaserScan assumes.
-      const std::size_t slot = obs.rightToLeft ? i : n - 1 - i;
+      const std::size_t slot = right_to_left != 0 ? i : n - 1 - i;
       scan.ranges[slot] = valid ? r : no_return;
     }
     return scan;
