@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The time bar of issue 6 against two RBPFs, side by side in one run on the raw MIT CSAIL log:
+# SegSLAM's time against two RBPFs, side by side in one run on the raw MIT CSAIL log:
 # lookahead's SegSLAM, lookahead's RBPF (copy-on-write maps) and MRPT's rbpf-slam (Debian
 # mrpt-apps, "optimal sampling", the settings of BASELINES.md; every particle owns its map).
 # One run at a time, one thread each (MRPT is single-threaded), so the wall times compare.

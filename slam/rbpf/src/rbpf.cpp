@@ -75,6 +75,7 @@ bool Rbpf::add_scan(const LaserScan& scan) {
   }
   since_update_.push_back(Pose2{});
   since_estimate_.push_back(Pose2{});
+  tracked_.push_back(false);
   update_particles(scan);  // Grisetti et al. sec. IV steps 1-4: proposal, weights, map
   resample_if_needed();    // step 5: selective resampling
   last_update_odometry_ = scan.odometry;
@@ -90,6 +91,7 @@ void Rbpf::initialize(const LaserScan& scan) {
   particles_.assign(static_cast<std::size_t>(options_.particles), p);
   since_update_.assign(1, Pose2{});
   since_estimate_.assign(1, Pose2{});
+  tracked_.assign(1, false);
   last_update_odometry_ = scan.odometry;
   stats_.updates = 1;
   stats_.neff.push_back(static_cast<double>(options_.particles));
@@ -110,14 +112,15 @@ void Rbpf::track_between_updates(const LaserScan& scan) {
   // every scan between updates as heading wobble.
   const Pose2& node = best.trajectory->pose;
   since_estimate_.push_back(tracked ? node.between(*tracked) : since_estimate_.back().compose(odometry_step));
+  tracked_.push_back(tracked.has_value());
 }
 
 // The scan's pose on `p`'s map: the mean of the improved proposal (Grisetti et al. 2007,
 // eq. (12)) around the match, the estimate the trajectory keeps at updates too; none before
 // the warm-up ends, with the motion-model proposal, or where the match fails. One particle
-// is tracked, so it can afford the bilinear field: sub-cell heading between updates (fr101,
-// seeds 1-10: relative rotation 0.42 -> 0.41 deg mean). The particles' own proposals keep the
-// cell lookup; with the bilinear field there too the trajectory drifts (ATE 0.077 -> 0.085 m).
+// is tracked, so it can afford the bilinear field: sub-cell heading between updates. The
+// particles' own proposals keep the cell lookup; with the bilinear field there too the
+// trajectory drifts (docs/algorithms/rbpf.md).
 std::optional<Pose2> Rbpf::track_on(const Particle& p, const Pose2& guess, const LaserScan& scan) const {
   const bool warm = stats_.updates > static_cast<std::size_t>(options_.warmup_updates);
   if (!warm || options_.proposal.kind != ProposalKind::kScanMatch) return std::nullopt;
@@ -254,7 +257,8 @@ std::vector<Pose2> Rbpf::best_trajectory() const {
   // A radian of turn weighs as much as the update thresholds make it (0.5 m / 0.25 rad: 2 m).
   const double metres_per_radian = options_.angular_update > 0 ? options_.linear_update / options_.angular_update : 0.0;
   return interpolate_between_updates(
-      updates, odometry_, [&](std::size_t, std::size_t s) { return since_estimate_[s]; }, metres_per_radian);
+      updates, odometry_, [&](std::size_t, std::size_t s) { return since_estimate_[s]; },
+      [&](std::size_t s) { return tracked_[s]; }, metres_per_radian);
 }
 
 }  // namespace lookahead::slam

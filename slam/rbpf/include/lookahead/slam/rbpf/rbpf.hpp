@@ -86,6 +86,7 @@ class Rbpf {
   std::vector<Particle> particles_;
   std::vector<Pose2> since_update_;    ///< per scan: pose relative to the best particle's drawn pose
   std::vector<Pose2> since_estimate_;  ///< per scan: pose relative to its trajectory's last node
+  std::vector<bool> tracked_;          ///< per scan: placed by matching between updates
   std::vector<std::shared_ptr<const HypothesisMap>> hypotheses_;
   std::mt19937_64 rng_;
   Pose2 last_update_odometry_;
