@@ -17,10 +17,10 @@ std::vector<double> travel_along(const std::vector<Pose2>& odometry, std::size_t
   return travel;
 }
 
-// The scans strictly between two estimates, at p and q, that placed none of them: the
-// odometry's path from p (`motion_p` and `motion_s` are motions from the update before),
-// with the share of the correction (the estimated motion p -> q minus the odometry's, in p's
-// frame) travelled so far.
+// The scans strictly between two estimates, at p and q, none of them placed: the odometry's
+// path from p (`motion_p`, `motion_q` and motion(a, s) are motions from the update a before
+// them), with the share of the correction (the estimated motion p -> q minus the odometry's,
+// in p's frame) travelled so far.
 struct Gap {
   std::size_t p, q;
   Pose2 pose_p, pose_q;      // the two estimates
