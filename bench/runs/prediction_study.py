@@ -150,7 +150,7 @@ def skip_report(runs):
 
 
 def funnel_report(runs):
-    funnel = defaultdict(lambda: [0, 0, 0, 0, 0, 0, 0, 0])
+    funnel = defaultdict(lambda: [0] * 12)
     for r in runs:
         p = r.get('prediction')
         if not p:
@@ -160,16 +160,21 @@ def funnel_report(runs):
         for h in p.get('hypothesis_list', []):
             f[4] += h.get('cells', 0); f[5] += h.get('cells_right', 0)
             f[6] += h.get('wall_cells', 0); f[7] += h.get('wall_cells_right', 0)
+        u = p.get('in_use', {})
+        f[8] += u.get('cells', 0); f[9] += u.get('cells_right', 0)
+        f[10] += u.get('wall_cells', 0); f[11] += u.get('wall_cells_right', 0)
     if not funnel:
         return
+    share = lambda right, all: f'{right / all:.3f}' if all else '-'
     print('\n## Predictor funnel (summed over missions)\n')
+    print('In use: the predicted cells, still unexplored and inside the building, that the target choices '
+          'read (summed over choices); the walls are what a gain seen through the prediction stops at.\n')
     print('| strategy | targets asked | no control point | no match above Psi threshold | hypotheses '
-          '| hypothesis cells right | predicted wall cells right |')
-    print('|---|---|---|---|---|---|---|')
+          '| hypothesis cells right | predicted wall cells right | in use: cells right | in use: walls right |')
+    print('|---|---|---|---|---|---|---|---|---|')
     for s, f in sorted(funnel.items()):
-        right = f'{f[5] / f[4]:.3f}' if f[4] else '-'
-        walls = f'{f[7] / f[6]:.3f}' if f[6] else '-'
-        print(f'| {s} | {f[0]} | {f[1]} | {f[2]} | {f[3]} | {right} | {walls} |')
+        print(f'| {s} | {f[0]} | {f[1]} | {f[2]} | {f[3]} | {share(f[5], f[4])} | {share(f[7], f[6])} '
+              f'| {share(f[9], f[8])} | {share(f[11], f[10])} |')
 
 
 def laser_setting(laser):

@@ -100,4 +100,26 @@ HypothesisCheck check_against_world(const slam::HypothesisMap& h, const World& w
   return check;
 }
 
+void score_prediction_in_use(const PredictedMap& look_ahead, const slam::OccupancyGrid& map, const World& world,
+                             const std::vector<std::uint8_t>& observable, double occupied_threshold,
+                             PredictionInUse& in_use) {
+  const slam::OccupancyGrid& cells = look_ahead.cells();
+  slam::CellIndex lo, hi;
+  if (!cells.known_bounds(lo, hi)) return;
+  for (int y = lo.y; y <= hi.y; ++y) {
+    for (int x = lo.x; x <= hi.x; ++x) {
+      if (!look_ahead.predicted(map, {x, y})) continue;
+      double cx = 0, cy = 0;
+      cells.cell_center({x, y}, cx, cy);
+      if (!is_observable(world, observable, cx, cy)) continue;
+      const bool wall = cells.probability({x, y}) >= occupied_threshold;
+      const bool right = prediction_matches_world(wall, world, cx, cy);
+      ++in_use.cells;
+      in_use.correct += right;
+      in_use.wall_cells += wall;
+      in_use.walls_correct += wall && right;
+    }
+  }
+}
+
 }  // namespace lookahead::exploration

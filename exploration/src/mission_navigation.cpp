@@ -175,6 +175,8 @@ NavEvent Mission::select_step() {
     tight_ = !costmap_.is_free(p.x, p.y);
     if (tight_ && squeeze()) return NavEvent::kSqueezed;
   }
+  // How right the predictions this choice reads are (the simulator knows the world).
+  if (lookahead_ && strategy_->prediction_use() != PredictionUse::kNone) lookahead_->score_choice(map());
   const Selection s = select_target(selection_inputs());
   spdlog::debug("t {:.1f}: selection {}: clusters {}, candidates {}, plans {} ({} failed), goal ({:.2f}, {:.2f})",
                 time_, static_cast<int>(s.outcome), s.clusters, s.candidates, s.plans, s.plan_failures, s.goal_x,

@@ -107,6 +107,7 @@ PredictionSummary summarize_predictions(const Mission& m) {
   if (!la) return s;
   s.enabled = true;
   summarize_records(la->records(), s);
+  s.in_use = la->in_use();
   summarize_final_map(m, la->predicted(), la->options().predictor.features.occupied_threshold, s);
   summarize_skip_protocol(m, s);
   if (const slam::Rbpf* f = m.slam()) {

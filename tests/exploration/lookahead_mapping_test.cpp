@@ -351,6 +351,40 @@ TEST(HypothesisCheck, CellsNoRobotObservesHoldNoWalls) {
   EXPECT_EQ(seen.predicted_walls, solid.predicted_walls);
 }
 
+// A choice reads the predicted cells still unexplored: those the robot has seen since are no
+// longer in use, nor are those no robot can observe.
+TEST(HypothesisCheck, ScoresThePredictionsAChoiceReads) {
+  World world(100, 40, 0.05, {0, 0}, World::kFree);
+  world.fill_rect({0, 1.0}, {5.0, 1.1}, World::kOccupied);  // a wall along y = 1
+  slam::HypothesisMap h;
+  for (double x = 0.525; x < 2.5; x += 0.05) {
+    h.grid.add_log_odds(h.grid.cell_at(x, 1.025), 3000);   // the wall, right
+    h.grid.add_log_odds(h.grid.cell_at(x, 0.525), -1000);  // free below it, right
+    h.grid.add_log_odds(h.grid.cell_at(x, 0.325), 3000);   // a wall that is not there
+  }
+  PredictedMap look_ahead;
+  look_ahead.add(h);
+  slam::OccupancyGrid map;
+  PredictionInUse before;
+  score_prediction_in_use(look_ahead, map, world, {}, 0.65, before);
+  EXPECT_EQ(before.cells, 120u);
+  EXPECT_EQ(before.correct, 80u);
+  EXPECT_EQ(before.wall_cells, 80u);
+  EXPECT_EQ(before.walls_correct, 40u);
+  // The robot has seen the wrong wall's row: it leaves the prediction in use.
+  for (double x = 0.525; x < 2.5; x += 0.05) map.add_log_odds(map.cell_at(x, 0.325), -1000);
+  PredictionInUse after = before;  // summed over choices
+  score_prediction_in_use(look_ahead, map, world, {}, 0.65, after);
+  EXPECT_EQ(after.cells, 200u);
+  EXPECT_EQ(after.walls_correct, 80u);
+  EXPECT_EQ(after.wall_cells, 120u);
+  // Nothing observable: nothing in use.
+  const std::vector<std::uint8_t> none(static_cast<std::size_t>(world.width() * world.height()), 0);
+  PredictionInUse unobservable;
+  score_prediction_in_use(look_ahead, map, world, none, 0.65, unobservable);
+  EXPECT_EQ(unobservable.cells, 0u);
+}
+
 TEST(LookaheadMission, PredictiveMazeRunChecksItsHypotheses) {
   const GeneratedWorld maze = make_pslam_maze({});
   MissionOptions o = MissionOptions::defaults();
@@ -365,6 +399,9 @@ TEST(LookaheadMission, PredictiveMazeRunChecksItsHypotheses) {
   EXPECT_GT(s.requests, 3);
   EXPECT_GT(s.hypotheses, 0);
   EXPECT_GT(s.cell_accuracy, 0.8);  // the maze is regular: most predicted cells are right
+  // The predictive strategy's choices read the look-ahead map, and most of what they read is right.
+  EXPECT_GT(s.in_use.cells, 0u);
+  EXPECT_GT(static_cast<double>(s.in_use.correct), 0.8 * static_cast<double>(s.in_use.cells));
   // What is left predicted inside the building is a part of all that is left predicted.
   EXPECT_LE(s.final_predicted_area_inside, s.final_predicted_area + 1e-9);
   if (s.final_predicted_area_inside > 0) {

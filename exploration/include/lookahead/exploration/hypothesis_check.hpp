@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "lookahead/exploration/predicted_map.hpp"
 #include "lookahead/exploration/world.hpp"
 #include "lookahead/slam/grid/hypothesis.hpp"
 
@@ -41,5 +42,19 @@ HypothesisCheck check_against_world(const slam::HypothesisMap& hypothesis, const
                                     const std::vector<std::uint8_t>& observable, double occupied_threshold,
                                     double wall_tolerance = 0.1, double similarity_resolution = 0.1,
                                     int similarity_tolerance_cells = 1);
+
+/// The look-ahead map's cells that a target choice reads: those predicted and still
+/// unexplored, within the observable part of the world (`observable`, as above; the
+/// predictions beyond the outer walls no choice reaches), summed over choices.
+struct PredictionInUse {
+  std::size_t cells = 0, correct = 0;
+  std::size_t wall_cells = 0, walls_correct = 0;  ///< the walls a gain seen through the prediction stops at
+};
+
+/// Adds the cells of `look_ahead` predicted on `map` now to `in_use`, each scored by
+/// prediction_matches_world().
+void score_prediction_in_use(const PredictedMap& look_ahead, const slam::OccupancyGrid& map, const World& world,
+                             const std::vector<std::uint8_t>& observable, double occupied_threshold,
+                             PredictionInUse& in_use);
 
 }  // namespace lookahead::exploration

@@ -113,6 +113,13 @@ class LookaheadMapping {
   /// The hypothesis of the pending request once its latency has passed (null otherwise, or
   /// when no hypothesis cleared the threshold).
   std::shared_ptr<const slam::HypothesisMap> deliver(double now);
+  /// Scores the look-ahead map as a target choice on `map` reads it (PredictionInUse,
+  /// summed over the mission's choices).
+  void score_choice(const slam::OccupancyGrid& map) {
+    score_prediction_in_use(predicted_, map, world_, observable_, options_.predictor.features.occupied_threshold,
+                            in_use_);
+  }
+  [[nodiscard]] const PredictionInUse& in_use() const { return in_use_; }
   /// Nothing running on the worker and nothing queued.
   [[nodiscard]] bool idle() const { return !pending_ && queued_.empty(); }
 
@@ -130,6 +137,7 @@ class LookaheadMapping {
   predictor::PredictionWorker worker_;
   PredictedMap predicted_;
   std::vector<PredictionRecord> records_;
+  PredictionInUse in_use_;
   void start_next(double now);
 
   slam::OccupancyGrid queued_map_;

@@ -23,6 +23,8 @@ struct PredictionSummary {
   double predicted_area = 0.0;                   ///< summed over hypotheses [m^2]
   double cell_accuracy = 0.0;                    ///< predicted cells whose class the world confirms
   double mean_seconds = 0.0, max_seconds = 0.0;  ///< wall time per prediction
+  /// The predicted cells the strategy's target choices read (LookaheadMapping::score_choice).
+  PredictionInUse in_use;
   /// The look-ahead map at the end: cells predicted and still unexplored.
   double final_predicted_area = 0.0;  ///< [m^2]
   double final_predicted_accuracy = 0.0;
