@@ -12,18 +12,15 @@
 // map is complete, so a target beyond the nearest frontier costs its path now and, later, the
 // part of it beyond the nearest again to come back (cost + (cost - nearest cost)). Without
 // it, a corridor's far end with a little more gain per metre than the rooms beside the robot
-// wins, and the rooms wait for a crossing of the building at the end of the mission (KTH
-// plans, 23 plans x 3 seeds: 0.925 -> 0.902 of nearest-frontier's time to 95 %; 180 deg
-// laser 0.877 -> 0.855). When every frontier is far, the shared way cancels out.
+// wins, and the rooms wait for a crossing of the building at the end of the mission. When
+// every frontier is far, the shared way cancels out.
 //
 // Frontiers the robot has the distance advantage on (Ericson et al. 2025: it is nearer to
 // them, by path, than any other frontier is, in a straight line) come first, by rate among
 // themselves; the rate ranks the rest only when there is none. No later target brings the
-// robot back near such a frontier, so the rate's greed leaves it, a closet or a room's
-// corner, for a dedicated trip at the end: the rate strategies reached 90 % explored at
-// 0.75x nearest-frontier's time and then spent a fifth of the mission on the last 5 %
-// (KTH plans, 23 plans x 3 seeds: 0.906 -> 0.860 of nearest's time to 95 % with prediction,
-// 0.891 -> 0.851 without; 180 deg laser 0.855 -> 0.827 and 0.840 -> 0.836).
+// robot back near such a frontier, so the rate's greed would leave it, a closet or a room's
+// corner, for a dedicated trip at the end, when the last few per cent of the map cost the
+// most. (Both rules' effect on time to 95 % explored: docs/results.md.)
 //
 // With prediction ("predictive-rate") the gain is seen through P-SLAM's look-ahead map
 // (Chang et al. 2007, sec. II-B): predicted walls stop the gain's rays, predicted free cells
