@@ -15,7 +15,9 @@
 # Usage: bench/runs/segslam_csail.sh [BUILD=build] [OUT=out/segslam_csail]
 #   env: RUNS (default 20), FIRST_SEED (default 1), PARTICLES (default "1 5 10 20 40"),
 #   JOBS (default 2), METHODS (default "rbpf segslam"), SEGSLAM_CONFIG (optional
-#   --segslam-config file). The report covers every runs-*.txt in OUT.
+#   --segslam-config file), MAP_SAMPLES (default 1: SegSLAM's maps sampled for the
+#   minimum-entropy map, sec. 5.4). The report covers every runs-*.txt in OUT, and the map
+#   entropy of every run (SegSLAM: its minimum-entropy map; the RBPF: the best particle's map).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD=${1:-build}
@@ -27,6 +29,7 @@ PARTICLES=${PARTICLES:-"1 5 10 20 40"}
 JOBS=${JOBS:-2}
 METHODS=${METHODS:-"rbpf segslam"}
 SEGSLAM_CONFIG=${SEGSLAM_CONFIG:-}
+MAP_SAMPLES=${MAP_SAMPLES:-1}
 mkdir -p "$OUT/runs"
 [[ -x $BUILD/lookahead ]] || { echo "build lookahead first" >&2; exit 1; }
 python3 bench/runs/csail_truth.py "$DATA/csail-oldcarmen.log" "$DATA/csail.corrected.log" > "$OUT/truth.txt"
@@ -35,14 +38,14 @@ run() {  # run METHOD N SEED
   local dir=$OUT/runs/$1-$2-$3 extra=()
   [[ $1 == segslam && -n $SEGSLAM_CONFIG ]] && extra=(--segslam-config "$SEGSLAM_CONFIG")
   "$BUILD/lookahead" slam "$DATA/csail-oldcarmen.log" --method "$1" --particles "$2" --seed "$3" --threads 1 \
-    --map-samples 1 "${extra[@]}" --out "$dir" > "$dir.log" 2>&1
+    --map-samples "$MAP_SAMPLES" "${extra[@]}" --out "$dir" > "$dir.log" 2>&1
   local errors time
   errors=$(python3 bench/runs/csail_error.py "$dir/trajectory.txt" "$OUT/truth.txt")
   time=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["wall_time_s"])' "$dir/run.json")
   echo "$1 $2 $3 $errors $time"
 }
 export -f run
-export OUT BUILD DATA SEGSLAM_CONFIG
+export OUT BUILD DATA SEGSLAM_CONFIG MAP_SAMPLES
 for n in $PARTICLES; do for s in $(seq "$FIRST_SEED" "$RUNS"); do for m in $METHODS; do echo "$m $n $s"; done; done; done |
   xargs -P "$JOBS" -L 1 bash -c 'run "$@"' _ | tee "$OUT/runs-$FIRST_SEED-$(date +%s).txt"
 
@@ -73,4 +76,23 @@ for n in sorted({k[1] for k in by}):
           + " | ".join(str(sum(e < 1 for e, _, _ in c)) for c in cells) + " | "
           + " | ".join(f"{st.mean([l for _, l, _ in c]):.2f}" if c else "-" for c in cells) + " | "
           + " | ".join(f"{st.median([t for _, _, t in c]):.1f}" if c else "-" for c in cells) + " | " + ratio(n) + " |")
+
+# Map entropy (SegSLAM eq. 22) in nats m^2: SegSLAM writes its minimum-entropy map's; the RBPF
+# writes the best particle's map in nats (a sum over cells), scaled here by its cell area.
+import json, os, re
+entropy = collections.defaultdict(list)
+for path in glob.glob(sys.argv[1] + '/runs/*/run.json'):
+    j = json.load(open(path))
+    m, n, _ = os.path.basename(os.path.dirname(path)).split('-')
+    if 'min_entropy_nats_m2' in j:
+        entropy[(m, int(n))].append(j['min_entropy_nats_m2'])
+    elif 'map_entropy_nats' in j:
+        cell = float(re.search(r'grid:\s*\n\s*resolution:\s*([0-9.eE+-]+)', j['configuration_yaml']).group(1))
+        entropy[(m, int(n))].append(j['map_entropy_nats'] * cell * cell)
+if entropy:
+    print()
+    print("| method | particles | runs | map entropy, least [nats m^2] | mean |")
+    print("|---|---|---|---|---|")
+    for (m, n), v in sorted(entropy.items()):
+        print(f"| {m} | {n} | {len(v)} | {min(v):.1f} | {st.mean(v):.1f} |")
 PY
