@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/prediction_summary.hpp"
 
-#include <spdlog/spdlog.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -35,46 +33,29 @@ void summarize_records(const std::vector<PredictionRecord>& records, PredictionS
   s.cell_accuracy = cells ? static_cast<double>(correct) / static_cast<double>(cells) : 0.0;
 }
 
-// The look-ahead map where the robot's map is still unknown, against the world.
+// The look-ahead map where the robot's map is still unknown, against the world: all of it, and
+// the part a robot could observe (as a target choice reads it, score_prediction_in_use).
 void summarize_final_map(const Mission& m, const PredictedMap& pm, double occupied, PredictionSummary& s) {
   slam::CellIndex lo, hi;
   if (!pm.cells().known_bounds(lo, hi)) return;
-  const std::vector<std::uint8_t> observable = observable_cells(m.world(), m.reachable());
-  const auto inside = [&](double x, double y) {
-    const slam::CellIndex c = m.world().cell_of({x, y});
-    if (c.x < 0 || c.y < 0 || c.x >= m.world().width() || c.y >= m.world().height()) return false;
-    return observable[static_cast<std::size_t>(c.y * m.world().width() + c.x)] != 0;
-  };
-  std::size_t cells = 0, correct = 0, cells_inside = 0, correct_inside = 0, ever_inside = 0;
+  std::size_t cells = 0, correct = 0;
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {
-      if (pm.cells().is_known({x, y})) {
-        double ex = 0, ey = 0;
-        pm.cells().cell_center({x, y}, ex, ey);
-        ever_inside += inside(ex, ey);
-      }
       if (!pm.predicted(m.map(), {x, y})) continue;
       double cx = 0, cy = 0;
       pm.cells().cell_center({x, y}, cx, cy);
       ++cells;
-      const bool wall = pm.cells().probability({x, y}) >= occupied;
-      const bool right = prediction_matches_world(wall, m.world(), cx, cy);
-      correct += right;
-      if (inside(cx, cy)) {
-        ++cells_inside;
-        correct_inside += right;
-      }
+      correct += prediction_matches_world(pm.cells().probability({x, y}) >= occupied, m.world(), cx, cy);
     }
   }
+  PredictionInUse inside;
+  score_prediction_in_use(pm, m.map(), m.world(), observable_cells(m.world(), m.reachable()), occupied, inside);
   const double res = pm.cells().resolution();
-  // Where look-ahead mapping's time goes: predicted cells the robot explored anyway.
-  spdlog::debug("look-ahead map inside the building: {:.1f} m^2 ever predicted, {:.1f} m^2 still unexplored",
-                static_cast<double>(ever_inside) * res * res, static_cast<double>(cells_inside) * res * res);
   s.final_predicted_area = static_cast<double>(cells) * res * res;
   s.final_predicted_accuracy = cells ? static_cast<double>(correct) / static_cast<double>(cells) : 0.0;
-  s.final_predicted_area_inside = static_cast<double>(cells_inside) * res * res;
+  s.final_predicted_area_inside = static_cast<double>(inside.cells) * res * res;
   s.final_predicted_accuracy_inside =
-      cells_inside ? static_cast<double>(correct_inside) / static_cast<double>(cells_inside) : 0.0;
+      inside.cells ? static_cast<double>(inside.correct) / static_cast<double>(inside.cells) : 0.0;
   s.coverage_with_predictions = m.coverage_meter().coverage(m.observed_map(), [&](double x, double y) {
     const slam::CellIndex c = pm.cells().cell_at(x, y);
     return pm.predicted(m.map(), c) && pm.cells().probability(c) < occupied && !m.world().is_occupied(x, y);
