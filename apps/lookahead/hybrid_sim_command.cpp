@@ -36,7 +36,6 @@ struct HybridSimArgs {
   std::vector<std::string> filters;
   bool no_study = false;
   bool no_figures = false;
-  bool no_adaptive = false;
 };
 
 // Paper's Table 1, for the side-by-side text table.
@@ -146,7 +145,7 @@ std::vector<FilterKind> filters_named(const std::vector<std::string>& names) {
     const auto* it = std::find_if(std::begin(kAllFilters), std::end(kAllFilters),
                                   [&](FilterKind k) { return filter_name(k) == name; });
     if (it == std::end(kAllFilters))
-      throw std::invalid_argument("--filters: unknown filter '" + name + "' (FASTSLAM, EKF, HYBRID, HYBRID-ADAPTIVE)");
+      throw std::invalid_argument("--filters: unknown filter '" + name + "' (FASTSLAM, EKF, HYBRID)");
     out.push_back(*it);
   }
   return out;
@@ -202,9 +201,9 @@ int run_hybrid_sim(const HybridSimArgs& a) {
   nlohmann::json j;
   if (!a.no_figures) j["figure_runs"] = figures(c, a.out);
   if (!a.no_study) {
-    std::vector<FilterKind> filters = {FilterKind::kFastSlam, FilterKind::kEkf, FilterKind::kHybrid};
-    if (!a.no_adaptive) filters.push_back(FilterKind::kHybridAdaptive);
-    if (!a.filters.empty()) filters = filters_named(a.filters);
+    const std::vector<FilterKind> filters =
+        a.filters.empty() ? std::vector<FilterKind>(std::begin(kAllFilters), std::end(kAllFilters))
+                          : filters_named(a.filters);
     ProgressBar bar("hybrid-sim", static_cast<std::size_t>(c.study.trials) * c.study.alphas.size());
     const auto start = std::chrono::steady_clock::now();
     const StudyResult r = run_study(c.study, c.filter, c.simulation, filters,
@@ -240,10 +239,9 @@ Run add_hybrid_sim_command(CLI::App& app) {
   app.add_option("--trial", args->trial,
                  "re-run one trial of the first clutter level alone with a per-step trace (trialN_FILTER.csv)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--filters", args->filters, "filters to run (FASTSLAM,EKF,HYBRID,HYBRID-ADAPTIVE)")->delimiter(',');
+  app.add_option("--filters", args->filters, "filters to run (FASTSLAM,EKF,HYBRID)")->delimiter(',');
   app.add_flag("--no-study", args->no_study, "only the figures and the speed run");
   app.add_flag("--no-figures", args->no_figures, "only Table 1");
-  app.add_flag("--no-adaptive", args->no_adaptive, "leave the adaptive-fusion HYBRID out of the study");
   return [args] { return run_hybrid_sim(*args); };
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # HybridSLAM sec. 5 in full: Table 1 over 100 trials per filter and clutter level (50
-# worlds, 500 particles), Fig. 3/4, NEES and the speed run. Several hours on 2 cores.
+# worlds, 500 particles), Fig. 3/4, NEES and the speed run. About 25 min on 2 cores.
 # Usage: bench/runs/hybrid_table1.sh [BUILD] [OUT] [TRIALS]
 set -euo pipefail
 BUILD=${1:-build}

@@ -197,12 +197,4 @@ PoseGaussian FastSlam::vehicle() const { return moment_match_pose(particles_); }
 
 GaussianMap FastSlam::to_gaussian(double min_existence) { return moment_match(particles_, min_existence, rng_); }
 
-bool FastSlam::unsettled() const {
-  const double d = options_.fusion.disputed_fraction;
-  for (const CommonFeature& f : common_features(particles_)) {
-    if (f.holder_weight > d && f.holder_weight < 1.0 - d) return true;
-  }
-  return outlier_weight(particles_, vehicle()) > options_.fusion.outlier_weight;
-}
-
 }  // namespace lookahead::slam::hybrid

@@ -39,10 +39,6 @@ void visit_sections(HybridConfig& c, V&& v) {
   v("seed", f.fastslam.seed, "seed of the filter's draws (single runs)");
   v.section("fusion");
   v("period", f.fusion.period, "local map age at fusion [s]");
-  v("adaptive", f.fusion.adaptive, "delay fusion while unsettled (beyond the paper)");
-  v("max_delay", f.fusion.max_delay, "longest delay [s]");
-  v("disputed_fraction", f.fusion.disputed_fraction, "a feature held by a weight in (d, 1-d) is disputed");
-  v("outlier_weight", f.fusion.outlier_weight, "multi-modal when more weight lies outside the 99% ellipse");
   v("jcbb_confidence", f.fusion.jcbb_confidence, "joint compatibility test level");
   v("jcbb_max_nodes", f.fusion.jcbb_max_nodes, "cap on the JCBB search");
   v("association_sigma", f.fusion.association_sigma, "std added to pair differences in the association test [m]");

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <map>
 
-#include "jcbb.hpp"
 #include "lookahead/slam/rbpf/particle_filter.hpp"
 
 namespace lookahead::slam::hybrid {
@@ -64,7 +63,6 @@ std::vector<CommonFeature> common_features(const std::vector<Particle>& particle
       CommonFeature& f = features[id];
       f.id = id;
       f.existence += p.weight * e / total;
-      f.holder_weight += p.weight / total;
     }
   }
   std::vector<CommonFeature> out;
@@ -144,18 +142,6 @@ GaussianMap moment_match(const std::vector<Particle>& particles, double min_exis
   g.covariance = g.covariance.selfadjointView<Eigen::Lower>();
   g.mean(2) = normalize_angle(g.mean(2));
   return g;
-}
-
-double outlier_weight(const std::vector<Particle>& particles, const PoseGaussian& fit) {
-  static const double kChi2Of99PercentIn3Dof = chi2_quantile(3, 0.99);
-  const Eigen::Matrix3d info = (fit.covariance + 1e-12 * Eigen::Matrix3d::Identity()).inverse();
-  const Eigen::Vector3d mean = pose_vector(fit.mean, fit.mean.theta);
-  double outside = 0.0;
-  for (const auto& p : particles) {
-    const Eigen::Vector3d d = pose_vector(p.pose, fit.mean.theta) - mean;
-    if (d.dot(info * d) > kChi2Of99PercentIn3Dof) outside += p.weight;
-  }
-  return outside / total_weight(particles);
 }
 
 }  // namespace lookahead::slam::hybrid

@@ -13,11 +13,10 @@ namespace lookahead::slam::hybrid {
 
 /// Probability of existence of every common feature: the weighted sum over particles of
 /// their landmark's existence, a particle without the feature counting 0 (HybridSLAM sec. 3.2, last
-/// paragraph). Returns (id, existence, holder weight) sorted by id.
+/// paragraph). Returns (id, existence) sorted by id.
 struct CommonFeature {
   long id = -1;
   double existence = 0.0;
-  double holder_weight = 0.0;  ///< weight of the particles that hold the feature
 };
 std::vector<CommonFeature> common_features(const std::vector<Particle>& particles);
 
@@ -29,9 +28,5 @@ GaussianMap moment_match(const std::vector<Particle>& particles, double min_exis
 
 /// The vehicle pose alone (what the failure test and the plots read every step).
 PoseGaussian moment_match_pose(const std::vector<Particle>& particles);
-
-/// Weight of the particles outside the 99 % ellipse of `fit` (chi-square, 3 dof): about
-/// 0.01 for a Gaussian cloud, more for a multi-modal one (the adaptive fusion rule).
-double outlier_weight(const std::vector<Particle>& particles, const PoseGaussian& fit);
 
 }  // namespace lookahead::slam::hybrid

@@ -24,17 +24,8 @@ void SubmapFilter::step(const MotionStep& control, const std::vector<RangeBearin
   if (fuse_ && fusion_due()) fuse_now();
 }
 
-// HybridSLAM sec. 5.1: fuse every `period` seconds. Adaptive rule (beyond the paper, its HybridSLAM sec. 6
-// suggestion): past the period, wait while the front-end is unsettled, up to max_delay.
-bool SubmapFilter::fusion_due() {
-  const FusionOptions& f = options_.fusion;
-  if (age_ + 1e-9 < f.period) return false;
-  if (!f.adaptive || age_ + 1e-9 >= f.period + f.max_delay) return true;
-  const bool wait = front_->unsettled();
-  if (wait && !delaying_) ++delayed_;
-  delaying_ = wait;
-  return !wait;
-}
+// HybridSLAM sec. 5.1: fuse every `period` seconds.
+bool SubmapFilter::fusion_due() const { return age_ + 1e-9 >= options_.fusion.period; }
 
 void SubmapFilter::fuse_now() {
   last_local_ = front_->to_gaussian(options_.existence.fuse_threshold);
@@ -42,7 +33,6 @@ void SubmapFilter::fuse_now() {
   associated_ += last_report_.associated;
   front_->restart();
   age_ = 0.0;
-  delaying_ = false;
   ++fusions_;
 }
 

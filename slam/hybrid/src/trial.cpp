@@ -18,20 +18,17 @@ std::string filter_name(FilterKind kind) {
       return "EKF";
     case FilterKind::kHybrid:
       return "HYBRID";
-    case FilterKind::kHybridAdaptive:
-      return "HYBRID-ADAPTIVE";
   }
   return "?";
 }
 
 std::unique_ptr<SubmapFilter> make_filter(FilterKind kind, const HybridOptions& options, const Pose2& start,
                                           std::uint64_t seed) {
-  HybridOptions o = options;
-  o.fusion.adaptive = kind == FilterKind::kHybridAdaptive;
   if (kind == FilterKind::kEkf) {
-    return std::make_unique<SubmapFilter>(std::make_unique<EkfFrontEnd>(o), o, start, true);
+    return std::make_unique<SubmapFilter>(std::make_unique<EkfFrontEnd>(options), options, start, true);
   }
-  return std::make_unique<SubmapFilter>(std::make_unique<FastSlam>(o, seed), o, start, kind != FilterKind::kFastSlam);
+  return std::make_unique<SubmapFilter>(std::make_unique<FastSlam>(options, seed), options, start,
+                                        kind != FilterKind::kFastSlam);
 }
 
 double pose_nees(const Pose2& truth, const PoseGaussian& estimate) {
@@ -69,7 +66,6 @@ TrialResult run_trial(FilterKind kind, const SimulatedRun& run, const HybridOpti
   filter->finish();
   r.map = filter->feature_map();
   r.fusions = filter->fusions();
-  r.delayed_fusions = filter->delayed_fusions();
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

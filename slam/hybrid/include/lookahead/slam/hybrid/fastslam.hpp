@@ -28,7 +28,6 @@ class FastSlam final : public LocalFrontEnd {
   void observe(const std::vector<RangeBearing>& observations) override;
   [[nodiscard]] PoseGaussian vehicle() const override;
   [[nodiscard]] GaussianMap to_gaussian(double min_existence) override;
-  [[nodiscard]] bool unsettled() const override;
   void restart() override;
 
   [[nodiscard]] const std::vector<Particle>& particles() const { return particles_; }

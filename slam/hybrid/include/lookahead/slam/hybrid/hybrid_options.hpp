@@ -48,16 +48,7 @@ struct FastSlamOptions {
 
 /// Sub-map fusion into the EKF global map (HybridSLAM sec. 4).
 struct FusionOptions {
-  double period = 10.0;  ///< T: local map age at fusion [s] (HybridSLAM sec. 5.1)
-  /// Beyond the paper (HybridSLAM sec. 6 suggests it): delay fusion while the particle cloud is
-  /// multi-modal or particles disagree about features, for at most max_delay.
-  bool adaptive = false;
-  double max_delay = 10.0;  ///< [s]
-  /// A feature is disputed when the particle weight holding it is within (d, 1 - d).
-  double disputed_fraction = 0.2;
-  /// The cloud is multi-modal when more than this weight lies beyond the 99 % ellipse of
-  /// its own moment-matched Gaussian (a Gaussian puts 1 % there).
-  double outlier_weight = 0.05;
+  double period = 10.0;           ///< T: local map age at fusion [s] (HybridSLAM sec. 5.1)
   double jcbb_confidence = 0.99;  ///< joint compatibility test level
   /// Std added to each pair's difference in the association test only [m] (see global_map.cpp).
   double association_sigma = 0.15;

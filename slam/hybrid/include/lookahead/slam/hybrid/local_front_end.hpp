@@ -25,8 +25,6 @@ class LocalFrontEnd {
   /// The local map as one Gaussian over the vehicle and the features whose probability of
   /// existence exceeds `min_existence`.
   [[nodiscard]] virtual GaussianMap to_gaussian(double min_existence) = 0;
-  /// True while fusing now would freeze an unresolved ambiguity (the adaptive rule).
-  [[nodiscard]] virtual bool unsettled() const { return false; }
   /// A new local map at the vehicle: origin here, no uncertainty, no features.
   virtual void restart() = 0;
 };

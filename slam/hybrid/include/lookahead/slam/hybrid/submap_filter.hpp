@@ -38,14 +38,13 @@ class SubmapFilter {
   [[nodiscard]] const GlobalMap& global_map() const { return global_; }
   [[nodiscard]] const LocalFrontEnd& front_end() const { return *front_; }
   [[nodiscard]] int fusions() const { return fusions_; }
-  [[nodiscard]] int delayed_fusions() const { return delayed_; }
   [[nodiscard]] int associated_at_fusion() const { return associated_; }
   [[nodiscard]] const FusionReport& last_fusion() const { return last_report_; }
   /// The local map handed over at the last fusion, in its own frame (diagnostic traces).
   [[nodiscard]] const GaussianMap& last_local_map() const { return last_local_; }
 
  private:
-  [[nodiscard]] bool fusion_due();
+  [[nodiscard]] bool fusion_due() const;
   void fuse_now();
 
   std::unique_ptr<LocalFrontEnd> front_;
@@ -53,8 +52,7 @@ class SubmapFilter {
   GlobalMap global_;
   bool fuse_;
   double age_ = 0.0;  ///< seconds since the local map started
-  int fusions_ = 0, delayed_ = 0, associated_ = 0;
-  bool delaying_ = false;
+  int fusions_ = 0, associated_ = 0;
   FusionReport last_report_;
   GaussianMap last_local_;
 };

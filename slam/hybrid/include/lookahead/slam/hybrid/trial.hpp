@@ -17,11 +17,10 @@
 
 namespace lookahead::slam::hybrid {
 
-/// The filters of HybridSLAM sec. 5.1, plus the adaptive fusion rule.
-enum class FilterKind { kFastSlam, kEkf, kHybrid, kHybridAdaptive };
-inline constexpr FilterKind kAllFilters[] = {FilterKind::kFastSlam, FilterKind::kEkf, FilterKind::kHybrid,
-                                             FilterKind::kHybridAdaptive};
-std::string filter_name(FilterKind kind);  ///< FASTSLAM, EKF, HYBRID, HYBRID-ADAPTIVE
+/// The filters of HybridSLAM sec. 5.1.
+enum class FilterKind { kFastSlam, kEkf, kHybrid };
+inline constexpr FilterKind kAllFilters[] = {FilterKind::kFastSlam, FilterKind::kEkf, FilterKind::kHybrid};
+std::string filter_name(FilterKind kind);  ///< FASTSLAM, EKF, HYBRID
 
 struct FailureRule {
   double sigma = 10.0;  ///< Mahalanobis distance of the true pose [std]
@@ -33,7 +32,7 @@ struct TrialResult {
   int failed_at = -1;        ///< step at which the rule fired
   double wall_s = 0.0;       ///< CPU-thread wall time of the filter alone [s]
   double simulated_s = 0.0;  ///< [s]
-  int fusions = 0, delayed_fusions = 0;
+  int fusions = 0;
   std::vector<double> trace;    ///< per step: trace of the vehicle covariance
   std::vector<double> nees;     ///< per step: squared Mahalanobis distance of the truth
   std::vector<Pose2> estimate;  ///< per step
