@@ -34,8 +34,7 @@ std::string read_text(const fs::path& path) {
 }
 
 // run.json back into the figures the study tables need; throws on anything missing.
-MissionSummary summary_from_json(const std::string& text) {
-  const nlohmann::json j = nlohmann::json::parse(text);
+MissionSummary summary_from_json(const nlohmann::json& j) {
   MissionSummary s;
   s.world = j.at("world").get<std::string>();
   s.strategy = j.at("strategy").get<std::string>();
@@ -234,8 +233,8 @@ std::optional<StudyRunResult> read_finished_run(const std::string& dir, const st
   try {
     // A run made by another build of lookahead is run again: the same options may decide
     // differently in other code, and a study must not mix the two.
-    const std::string json = read_text(d / "run.json");
-    if (nlohmann::json::parse(json).at("provenance").at("commit") != slam::provenance(1).commit) return std::nullopt;
+    const nlohmann::json json = nlohmann::json::parse(read_text(d / "run.json"));
+    if (json.at("provenance").at("commit") != slam::provenance(1).commit) return std::nullopt;
     StudyRunResult r;
     r.finished = true;
     r.reused = true;
