@@ -1,50 +1,118 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/exploration/world_reachability.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <stdexcept>
+
+#include "lookahead/exploration/robot.hpp"
 
 namespace lookahead::exploration {
 namespace {
 
-// 255 where the robot centre fits, with a one-cell occupied frame (outside = occupied).
-cv::Mat centre_space(const World& w, double radius) {
-  cv::Mat free(w.height() + 2, w.width() + 2, CV_8U, cv::Scalar(0));
+// [m] largest spacing of the flood's samples. The robot collides as a disc against wall
+// squares (`disc_collides`); on plans drawn at 0.2 m per pixel a flood over pixel centres
+// has to round a door of 2 pixels to open or shut for a 0.2 m robot. At 5 cm the rounding
+// costs at most a centimetre of clearance.
+constexpr double kSampleStep = 0.05;
+
+// Samples per world cell along each axis, and their spacing.
+struct Sampling {
+  int per_cell = 1;
+  double step = 0.0;
+};
+
+Sampling sampling_of(const World& w) {
+  Sampling s;
+  s.per_cell = std::max(1, static_cast<int>(std::ceil(w.resolution() / kSampleStep - 1e-9)));
+  s.step = w.resolution() / s.per_cell;
+  return s;
+}
+
+// 255 on samples whose world cell is free, with a frame one cell wide that counts as wall
+// (outside the plan is occupied). Sample (u, v) of the frame-less grid sits at the centre of
+// the u-th sub-square of its cell row.
+cv::Mat free_samples(const World& w, const Sampling& s) {
+  const int f = s.per_cell;
+  cv::Mat free((w.height() + 2) * f, (w.width() + 2) * f, CV_8U, cv::Scalar(0));
   for (int y = 0; y < w.height(); ++y) {
     for (int x = 0; x < w.width(); ++x) {
-      if (!w.is_occupied(slam::CellIndex{x, y})) free.at<std::uint8_t>(y + 1, x + 1) = 255;
+      if (w.is_occupied(slam::CellIndex{x, y})) continue;
+      free(cv::Rect((x + 1) * f, (y + 1) * f, f, f)).setTo(255);
     }
   }
-  if (radius <= 0) return free;
+  return free;
+}
+
+// 255 where the robot's centre fits: the distance from the sample to the nearest wall square
+// is at least the radius. distanceTransform measures to the nearest wall sample's centre, half
+// a sample beyond the square's face.
+cv::Mat centre_space(const cv::Mat& free, const Sampling& s, double radius) {
+  if (radius <= 0) return free.clone();
   cv::Mat dist;
   cv::distanceTransform(free, dist, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  const float min_px = static_cast<float>(radius / w.resolution() + std::sqrt(0.5));
   cv::Mat fits;
-  cv::compare(dist, min_px, fits, cv::CMP_GE);
+  cv::compare(dist, static_cast<float>(radius / s.step + 0.5), fits, cv::CMP_GE);
   return fits;
 }
 
-std::size_t flood_fill(const cv::Mat& space, slam::CellIndex start, std::vector<std::uint8_t>& out, int width) {
-  std::vector<slam::CellIndex> stack{start};
-  out[static_cast<std::size_t>(start.y) * width + start.x] = 1;
-  std::size_t count = 0;
+// 4-connected (no diagonal squeeze between two corners) flood of `space` from `start`; the
+// frame's samples are 0, so the fill never leaves the grid. Marks the reached samples 255.
+cv::Mat flood(const cv::Mat& space, cv::Point start) {
+  cv::Mat reached(space.size(), CV_8U, cv::Scalar(0));
+  std::vector<cv::Point> stack{start};
+  reached.at<std::uint8_t>(start) = 255;
   const int dx[] = {1, -1, 0, 0}, dy[] = {0, 0, 1, -1};
   while (!stack.empty()) {
-    const slam::CellIndex c = stack.back();
+    const cv::Point c = stack.back();
     stack.pop_back();
-    ++count;
     for (int k = 0; k < 4; ++k) {
-      const slam::CellIndex n{c.x + dx[k], c.y + dy[k]};
-      // The frame keeps n inside `space`; its cells are 0, so they stop the fill.
-      if (space.at<std::uint8_t>(n.y + 1, n.x + 1) == 0) continue;
-      auto& seen = out[static_cast<std::size_t>(n.y) * width + n.x];
-      if (seen) continue;
-      seen = 1;
+      const cv::Point n{c.x + dx[k], c.y + dy[k]};
+      if (space.at<std::uint8_t>(n) == 0 || reached.at<std::uint8_t>(n) != 0) continue;
+      reached.at<std::uint8_t>(n) = 255;
       stack.push_back(n);
     }
   }
-  return count;
+  return reached;
+}
+
+// Row-major world-cell mask: 1 where any sample of the cell is set in `samples`.
+std::vector<std::uint8_t> cells_touched(const cv::Mat& samples, const World& w, int f) {
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(w.width()) * w.height(), 0);
+  for (int y = 0; y < w.height(); ++y) {
+    for (int x = 0; x < w.width(); ++x) {
+      if (cv::countNonZero(samples(cv::Rect((x + 1) * f, (y + 1) * f, f, f))) > 0) {
+        out[static_cast<std::size_t>(y) * w.width() + x] = 1;
+      }
+    }
+  }
+  return out;
+}
+
+// The fitting sample the flood starts from: the one holding `start`, else the nearest of its
+// eight neighbours that fits (a start the robot's check allows can lie up to a centimetre
+// closer to a corner than the samples' rounding grants).
+std::optional<cv::Point> seed_sample(const cv::Mat& space, const World& w, const Sampling& s,
+                                     const Eigen::Vector2d& start) {
+  const Eigen::Vector2d local = (start - w.origin()) / s.step;
+  const cv::Point home(static_cast<int>(std::floor(local.x())) + s.per_cell,
+                       static_cast<int>(std::floor(local.y())) + s.per_cell);
+  std::optional<cv::Point> best;
+  double best_d2 = 0.0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      const cv::Point c(home.x + dx, home.y + dy);
+      if (space.at<std::uint8_t>(c) == 0) continue;
+      const double ex = c.x - s.per_cell + 0.5 - local.x(), ey = c.y - s.per_cell + 0.5 - local.y();
+      if (!best || ex * ex + ey * ey < best_d2) {
+        best = c;
+        best_d2 = ex * ex + ey * ey;
+      }
+    }
+  }
+  return best;
 }
 
 }  // namespace
@@ -55,19 +123,21 @@ ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& sta
   const std::size_t n = world.cells().size();
   r.centres.assign(n, 0);
   r.reachable.assign(n, 0);
-  const cv::Mat space = centre_space(world, robot_radius);
-  const slam::CellIndex s = world.cell_of(start);
-  if (!world.contains(s) || space.at<std::uint8_t>(s.y + 1, s.x + 1) == 0) return r;
+  // A start the robot's own check refuses is refused here too (Robot::step's geometry).
+  if (world.is_occupied(world.cell_of(start)) || disc_collides(world, start, robot_radius)) return r;
+  const Sampling s = sampling_of(world);
+  const cv::Mat space = centre_space(free_samples(world, s), s, robot_radius);
+  const std::optional<cv::Point> seed = seed_sample(space, world, s, start);
+  if (!seed) return r;
   r.start_valid = true;
-  flood_fill(space, s, r.centres, world.width());
-  cv::Mat body(world.height(), world.width(), CV_8U, r.centres.data());
-  cv::Mat grown = body.clone();
-  const int k = static_cast<int>(std::ceil(robot_radius / world.resolution()));
-  if (k > 0) {
-    cv::dilate(body, grown, cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * k + 1, 2 * k + 1}));
-  }
+  const cv::Mat centres = flood(space, *seed);
+  r.centres = cells_touched(centres, world, s.per_cell);
+  cv::Mat body = centres;
+  const int k = static_cast<int>(std::ceil(robot_radius / s.step - 1e-9));
+  if (k > 0) cv::dilate(centres, body, cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * k + 1, 2 * k + 1}));
+  const std::vector<std::uint8_t> covered = cells_touched(body, world, s.per_cell);
   for (std::size_t i = 0; i < n; ++i) {
-    r.reachable[i] = (grown.data[i] != 0 && world.cells()[i] == World::kFree) ? 1 : 0;
+    r.reachable[i] = (covered[i] != 0 && world.cells()[i] == World::kFree) ? 1 : 0;
     r.reachable_cells += r.reachable[i];
   }
   r.area_m2 = static_cast<double>(r.reachable_cells) * world.resolution() * world.resolution();

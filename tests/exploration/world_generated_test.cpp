@@ -101,16 +101,5 @@ TEST(GeneratedWorlds, PslamCorridorIsAnLWithBoxesTheRobotCanPass) {
   EXPECT_THROW(narrow.validate(), std::invalid_argument);
 }
 
-TEST(WorldReachability, WideDiscCannotPassANarrowGap) {
-  // Two 2 m rooms joined by a 0.4 m gap: a point passes, a 0.25 m disc does not.
-  World w(80, 40, 0.05, {0, 0}, World::kFree);
-  w.fill_rect({1.95, 0.0}, {2.05, 2.0}, World::kOccupied);
-  w.fill_rect({1.95, 0.8}, {2.05, 1.2}, World::kFree);
-  EXPECT_EQ(reachable_free_area(w, {1.0, 1.0}, 0.0).reachable_cells, w.free_cell_count());
-  const ReachableArea disc = reachable_free_area(w, {1.0, 1.0}, 0.25);
-  EXPECT_NEAR(disc.area_m2, 1.95 * 2.0, 0.1);
-  EXPECT_FALSE(reachable_free_area(w, {2.0, 0.1}, 0.25).start_valid);
-}
-
 }  // namespace
 }  // namespace lookahead::exploration

@@ -12,8 +12,8 @@
 namespace lookahead::exploration {
 
 struct ReachableArea {
-  /// Cells where the robot's centre can go: free after inflating the obstacles by the radius,
-  /// 4-connected to the start cell (4 so no diagonal squeezes between two corners).
+  /// Cells holding a place the robot's centre can go: at least the radius from every wall
+  /// square, 4-connected to the start (4 so no diagonal squeezes between two corners).
   std::vector<std::uint8_t> centres;
   /// Free cells the robot's body can cover from those centres (centres grown by the radius):
   /// what a coverage metric should count. Row-major like World::cells(); 1 = reachable.
@@ -24,9 +24,10 @@ struct ReachableArea {
   bool start_valid = false;
 };
 
-/// Flood fill from `start` [m] for a robot of `robot_radius` [m] (>= 0; 0 = a point robot).
-/// Inflation is conservative: a cell is blocked when the nearest occupied cell centre is
-/// closer than radius + half a cell diagonal.
+/// Flood fill from `start` [m] for a robot of `robot_radius` [m] (>= 0; 0 = a point robot),
+/// with the robot's own collision geometry (a disc against wall squares, as `Robot::step`).
+/// The flood runs on samples at most 5 cm apart, so a door a few pixels wide on a coarse plan
+/// is open to the count exactly when the robot fits through it (to within a centimetre).
 ReachableArea reachable_free_area(const World& world, const Eigen::Vector2d& start, double robot_radius);
 
 /// [m]: how far beyond the reachable free space a wall is still seen (its surface layer).
