@@ -61,20 +61,11 @@ cv::Mat centre_space(const cv::Mat& free, const Sampling& s, double radius) {
 // 4-connected (no diagonal squeeze between two corners) flood of `space` from `start`; the
 // frame's samples are 0, so the fill never leaves the grid. Marks the reached samples 255.
 cv::Mat flood(const cv::Mat& space, cv::Point start) {
-  cv::Mat reached(space.size(), CV_8U, cv::Scalar(0));
-  std::vector<cv::Point> stack{start};
-  reached.at<std::uint8_t>(start) = 255;
-  const int dx[] = {1, -1, 0, 0}, dy[] = {0, 0, 1, -1};
-  while (!stack.empty()) {
-    const cv::Point c = stack.back();
-    stack.pop_back();
-    for (int k = 0; k < 4; ++k) {
-      const cv::Point n{c.x + dx[k], c.y + dy[k]};
-      if (space.at<std::uint8_t>(n) == 0 || reached.at<std::uint8_t>(n) != 0) continue;
-      reached.at<std::uint8_t>(n) = 255;
-      stack.push_back(n);
-    }
-  }
+  constexpr int kReached = 128;
+  cv::Mat fill = space.clone();
+  cv::floodFill(fill, start, kReached, nullptr, 0, 0, 4);
+  cv::Mat reached;
+  cv::compare(fill, kReached, reached, cv::CMP_EQ);
   return reached;
 }
 
