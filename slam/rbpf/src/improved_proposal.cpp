@@ -83,4 +83,16 @@ ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& prev
   return out;
 }
 
+ProposalDraw improved_proposal_at_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u,
+                                       const Pose2& mode, const PreparedScan& scan,
+                                       const LikelihoodFieldModel& likelihood, const OdometryMotionModel& motion,
+                                       const ProposalOptions& options, FieldLookup lookup) {
+  const FittedProposal f = fit_proposal(grid, previous, u, mode, scan, likelihood, motion, options, lookup);
+  ProposalDraw out;
+  out.mean = {mode.x + f.mu.x(), mode.y + f.mu.y(), normalize_angle(mode.theta + f.mu.z())};
+  out.pose = out.mean;
+  out.log_eta = f.log_eta;
+  return out;
+}
+
 }  // namespace lookahead::slam
