@@ -47,9 +47,9 @@ TEST(Rbpf, CorrectsDriftingOdometry) {
   Rbpf filter(small(1));
   for (const auto& d : data) filter.add_scan(d.second);
   const auto path = filter.best_trajectory();
-  // The trajectory keeps the proposal's mean, the current pose the draw the map was built
-  // with: the same hypothesis, a draw's noise apart (centimetres at most, where the scan
-  // leaves a direction open).
+  // The trajectory keeps the proposal's mean, the current pose the pose the map was built
+  // with: the mean itself (proposal.sampling: start), or a draw from around it (kernel), a
+  // draw's noise apart (centimetres at most, where the scan leaves a direction open).
   EXPECT_NEAR(filter.current_pose().x, path.back().x, 0.05);
   EXPECT_NEAR(filter.current_pose().y, path.back().y, 0.05);
   EXPECT_NEAR(filter.current_pose().theta, path.back().theta, 0.02);

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "lookahead/slam/rbpf/improved_proposal.hpp"
+#include "lookahead/slam/rbpf/particle_step.hpp"
 #include "lookahead/slam/sensor/scan_inserter.hpp"
 #include "test_world.hpp"
 
@@ -114,6 +115,68 @@ TEST_F(ScanMatcherTest, ProposalIsNarrowAroundTheMode) {
   // Far tighter than the odometry model's ~5 cm for a 0.5 m step.
   EXPECT_LT(std::sqrt(sx / 50), 0.03);
   EXPECT_LT(std::sqrt(sy / 50), 0.03);
+}
+
+// proposal.sampling: start (GMapping's released code): the particle is the kernel's mean
+// (Grisetti 2007 eq. (12)), its spread comes from the motion-model draw of the matcher's start.
+// A start drawn far off (7 deg of rotation std here) may climb to another optimum of this
+// small map; eta (eq. (14)) weighs it down.
+TEST_F(ScanMatcherTest, StartSamplingPutsTheParticleAtTheProposalMean) {
+  const RbpfOptions options;
+  ASSERT_EQ(options.proposal.sampling, ProposalSampling::kStart);  // the default
+  const OdometryMotionModel motion(options.motion);
+  const ScanMatcher matcher(options.matcher, model);
+  const ParticleStepModels models{options, motion, model, matcher};
+  const Pose2 u{0.5, 0.0, 0.1};
+  const Pose2 previous = truth.compose(u.inverse());
+  std::set<double> xs;
+  int near = 0;
+  double best_weight = -INFINITY;
+  bool best_is_near = false;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    std::mt19937_64 rng(seed);
+    Pose2 pose = previous, estimate;
+    double log_weight = 0.0;
+    ASSERT_FALSE(draw_particle(models, grid, pose, log_weight, u, scan, true, rng, &estimate));
+    EXPECT_DOUBLE_EQ(pose.x, estimate.x);
+    EXPECT_DOUBLE_EQ(pose.y, estimate.y);
+    EXPECT_DOUBLE_EQ(pose.theta, estimate.theta);
+    const bool is_near = std::hypot(pose.x - truth.x, pose.y - truth.y) < 0.03 &&
+                         std::abs(normalize_angle(pose.theta - truth.theta)) < 0.01;
+    near += is_near ? 1 : 0;
+    if (log_weight > best_weight) {
+      best_weight = log_weight;
+      best_is_near = is_near;
+    }
+    xs.insert(pose.x);
+  }
+  EXPECT_GE(near, 10);
+  EXPECT_TRUE(best_is_near);
+  EXPECT_GT(xs.size(), 1u);  // different starts, different particles
+}
+
+// proposal.sampling: kernel (as published): the particle is drawn from N(mu, Sigma) around
+// the match from the odometry prediction; the estimate is mu.
+TEST_F(ScanMatcherTest, KernelSamplingDrawsAroundTheMean) {
+  RbpfOptions options;
+  options.proposal.sampling = ProposalSampling::kKernel;
+  const OdometryMotionModel motion(options.motion);
+  const ScanMatcher matcher(options.matcher, model);
+  const ParticleStepModels models{options, motion, model, matcher};
+  const Pose2 u{0.5, 0.0, 0.1};
+  const Pose2 previous = truth.compose(u.inverse());
+  std::set<double> means;
+  int apart = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    std::mt19937_64 rng(seed);
+    Pose2 pose = previous, estimate;
+    double log_weight = 0.0;
+    ASSERT_FALSE(draw_particle(models, grid, pose, log_weight, u, scan, true, rng, &estimate));
+    apart += pose.x != estimate.x ? 1 : 0;
+    means.insert(estimate.x);
+  }
+  EXPECT_EQ(apart, 20);
+  EXPECT_EQ(means.size(), 1u);  // every particle matched from the same prediction
 }
 
 }  // namespace
