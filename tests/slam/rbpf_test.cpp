@@ -48,8 +48,7 @@ TEST(Rbpf, CorrectsDriftingOdometry) {
   for (const auto& d : data) filter.add_scan(d.second);
   const auto path = filter.best_trajectory();
   // The trajectory keeps the proposal's mean, the current pose the pose the map was built
-  // with: the mean itself (proposal.sampling: start), or a draw from around it (kernel), a
-  // draw's noise apart (centimetres at most, where the scan leaves a direction open).
+  // with: the same mean, up to where the trajectory's last node was placed.
   EXPECT_NEAR(filter.current_pose().x, path.back().x, 0.05);
   EXPECT_NEAR(filter.current_pose().y, path.back().y, 0.05);
   EXPECT_NEAR(filter.current_pose().theta, path.back().theta, 0.02);

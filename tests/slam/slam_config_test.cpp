@@ -68,22 +68,6 @@ TEST(SlamConfig, ProposalKindIsANamedChoice) {
   }
 }
 
-// proposal.sampling likewise: start by default, kernel for the published draw.
-TEST(SlamConfig, ProposalSamplingIsANamedChoice) {
-  EXPECT_EQ(RbpfOptions{}.proposal.sampling, ProposalSampling::kStart);
-  const RbpfOptions o = parse_rbpf_options("proposal:\n  sampling: kernel\n", "my.yaml");
-  EXPECT_EQ(o.proposal.sampling, ProposalSampling::kKernel);
-  EXPECT_NE(dump_rbpf_options(o).find("  sampling: kernel  #"), std::string::npos);
-  EXPECT_EQ(parse_rbpf_options(dump_rbpf_options(o), "dump").proposal.sampling, ProposalSampling::kKernel);
-  try {
-    parse_rbpf_options("proposal:\n  sampling: mean\n", "my.yaml");
-    FAIL() << "no error";
-  } catch (const ParseError& e) {
-    EXPECT_EQ(e.field(), "proposal.sampling");
-    EXPECT_NE(std::string(e.what()).find("kernel | start"), std::string::npos) << e.what();
-  }
-}
-
 // A hit ratio above 1 is no way to switch the scan matcher off: proposal.kind is.
 TEST(SlamConfig, HitRatioAboveOneIsRejected) {
   try {

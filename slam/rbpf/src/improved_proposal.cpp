@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "lookahead/slam/rbpf/improved_proposal.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
@@ -10,10 +9,9 @@ namespace lookahead::slam {
 
 namespace {
 
-// The Gaussian fitted to the 27 kernel points, in offsets from the mode.
+// The kernel's mean, in offsets from the mode, and its weight.
 struct FittedProposal {
   Eigen::Vector3d mu;
-  Eigen::Matrix3d sigma;
   double log_eta = 0.0;
 };
 
@@ -44,16 +42,7 @@ FittedProposal fit_proposal(const OccupancyGrid& grid, const Pose2& previous, co
     mu += tau * offsets[j];
   }
   mu /= eta;
-  Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
-  for (int j = 0; j < 27; ++j) {
-    const Eigen::Vector3d d = offsets[j] - mu;
-    sigma += std::exp(log_tau[j] - max_log) * d * d.transpose();
-  }
-  sigma /= eta;
-  const double fl = options.min_sigma_fraction * options.kernel_linear;
-  const double fa = options.min_sigma_fraction * options.kernel_angular;
-  sigma += Eigen::Vector3d(fl * fl, fl * fl, fa * fa).asDiagonal();
-  return {mu, sigma, max_log + std::log(eta)};
+  return {mu, max_log + std::log(eta)};
 }
 
 }  // namespace
@@ -65,24 +54,6 @@ Pose2 improved_proposal_mean(const OccupancyGrid& grid, const Pose2& previous, c
   return {mode.x + f.mu.x(), mode.y + f.mu.y(), normalize_angle(mode.theta + f.mu.z())};
 }
 
-ProposalDraw draw_improved_proposal(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
-                                    const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
-                                    const OdometryMotionModel& motion, const ProposalOptions& options,
-                                    std::mt19937_64& rng) {
-  const FittedProposal f = fit_proposal(grid, previous, u, mode, scan, likelihood, motion, options, FieldLookup::kCell);
-  const Eigen::Vector3d& mu = f.mu;
-  const Eigen::Matrix3d l = f.sigma.llt().matrixL();
-  std::normal_distribution<double> n(0.0, 1.0);
-  const Eigen::Vector3d z(n(rng), n(rng), n(rng));
-  const Eigen::Vector3d draw = mu + l * z;
-
-  ProposalDraw out;
-  out.mean = {mode.x + mu.x(), mode.y + mu.y(), normalize_angle(mode.theta + mu.z())};
-  out.pose = {mode.x + draw.x(), mode.y + draw.y(), normalize_angle(mode.theta + draw.z())};
-  out.log_eta = f.log_eta;
-  return out;
-}
-
 ProposalDraw improved_proposal_at_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u,
                                        const Pose2& mode, const PreparedScan& scan,
                                        const LikelihoodFieldModel& likelihood, const OdometryMotionModel& motion,
@@ -90,7 +61,6 @@ ProposalDraw improved_proposal_at_mean(const OccupancyGrid& grid, const Pose2& p
   const FittedProposal f = fit_proposal(grid, previous, u, mode, scan, likelihood, motion, options, lookup);
   ProposalDraw out;
   out.mean = {mode.x + f.mu.x(), mode.y + f.mu.y(), normalize_angle(mode.theta + f.mu.z())};
-  out.pose = out.mean;
   out.log_eta = f.log_eta;
   return out;
 }

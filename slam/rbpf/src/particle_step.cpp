@@ -9,19 +9,16 @@ namespace lookahead::slam {
 bool draw_particle(const ParticleStepModels& m, const OccupancyGrid& map, Pose2& pose, double& log_weight,
                    const Pose2& u, const PreparedScan& prepared, bool warm, std::mt19937_64& rng, Pose2* estimate) {
   const bool match_scan = warm && m.options.proposal.kind == ProposalKind::kScanMatch;
-  // ProposalSampling::kStart: the particles' spread enters before the match (GMapping's
-  // released code), not as a draw around it.
-  const bool from_start = m.options.proposal.sampling == ProposalSampling::kStart;
-  const Pose2 start = match_scan && from_start ? m.motion.sample(pose, u, rng) : pose.compose(u);
+  // The particles' spread enters before the match, as a motion-model draw of its start
+  // (GMapping's released code), not as a draw around it (improved_proposal.hpp).
+  const Pose2 start = match_scan ? m.motion.sample(pose, u, rng) : pose.compose(u);
   MatchResult match;
   if (match_scan) match = m.matcher.match(map, start, prepared, m.motion.rotation_sigma(u));
   bool failed = false;
   if (match_scan && match.ok) {
-    const ProposalDraw d = from_start ? improved_proposal_at_mean(map, pose, u, match.pose, prepared, m.likelihood,
-                                                                  m.motion, m.options.proposal, FieldLookup::kBilinear)
-                                      : draw_improved_proposal(map, pose, u, match.pose, prepared, m.likelihood,
-                                                               m.motion, m.options.proposal, rng);
-    pose = d.pose;
+    const ProposalDraw d = improved_proposal_at_mean(map, pose, u, match.pose, prepared, m.likelihood, m.motion,
+                                                     m.options.proposal, FieldLookup::kBilinear);
+    pose = d.mean;
     if (estimate) *estimate = d.mean;
     log_weight += m.options.weight_exponent * d.log_eta;
   } else {

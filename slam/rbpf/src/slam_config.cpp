@@ -60,12 +60,8 @@ void visit_sections(RbpfOptions& o, V&& v) {
   v.section("proposal");
   v("kind", o.proposal.kind,
     "scan_match (Grisetti 2007 improved proposal) | motion_model (odometry, weighted by the scan)");
-  v("sampling", o.proposal.sampling,
-    "start (motion-model draw before the match, particle at the mean; GMapping) | kernel (draw around the "
-    "match; Grisetti 2007)");
   v("kernel_linear", o.proposal.kernel_linear, "spacing of the 27 kernel points in x, y [m]");
   v("kernel_angular", o.proposal.kernel_angular, "spacing in theta [rad]");
-  v("min_sigma_fraction", o.proposal.min_sigma_fraction, "floor of the fitted std, fraction of spacing");
   v.section("prediction");
   v("enabled", o.prediction.enabled, "P-SLAM: hypotheses in the weights (--predict)");
   v("hit_ratio_threshold", o.prediction.hit_ratio_threshold, "hr_Th: prediction unused when every particle is below");
