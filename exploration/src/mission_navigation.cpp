@@ -17,17 +17,15 @@ namespace {
 // around) before the last resorts (recovery_behaviour.hpp).
 constexpr int kOrdinaryTries = 3;
 
-// A replan longer than the blocked path's rest by more than this [m] is the long way round.
-// When the safety margin alone closed the blocked path (a door it closes with one scan and
-// opens with the next) and the body still fits along it, the path is kept instead. Any
-// longer bar lets the robot swap ways for good in a room with two narrow exits: walking to
-// one, the margin closes it and the way through the other, a third longer, is taken; walking
-// to that one, the margin closes it and the first is back (a KTH plan's room with two 0.4 m
-// doors held a mission there for 1,500 s under a bar of 1.5x the rest plus 1 m).
+// A replan longer than this many times the blocked path's rest, plus the slack [m], turns
+// the robot the long way round. When the safety margin alone closed the blocked path (a
+// door it closes with one scan and opens with the next), the path is kept instead: taking
+// such replans swaps the robot between two ways round for as long as the door flickers.
+constexpr double kLongWayRound = 1.5;
 constexpr double kLongWayRoundSlack = 1.0;
 
 bool long_way_round(const planner::Path& replanned, const planner::PathFollower& blocked) {
-  return planner::path_length(replanned) > blocked.remaining_length() + kLongWayRoundSlack;
+  return planner::path_length(replanned) > kLongWayRound * blocked.remaining_length() + kLongWayRoundSlack;
 }
 
 }  // namespace
