@@ -50,16 +50,15 @@ FittedProposal fit_proposal(const OccupancyGrid& grid, const Pose2& previous, co
 Pose2 improved_proposal_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
                              const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
                              const OdometryMotionModel& motion, const ProposalOptions& options, FieldLookup lookup) {
-  const FittedProposal f = fit_proposal(grid, previous, u, mode, scan, likelihood, motion, options, lookup);
-  return {mode.x + f.mu.x(), mode.y + f.mu.y(), normalize_angle(mode.theta + f.mu.z())};
+  return improved_proposal_at_mean(grid, previous, u, mode, scan, likelihood, motion, options, lookup).mean;
 }
 
-ProposalDraw improved_proposal_at_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u,
+ProposalMean improved_proposal_at_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u,
                                        const Pose2& mode, const PreparedScan& scan,
                                        const LikelihoodFieldModel& likelihood, const OdometryMotionModel& motion,
                                        const ProposalOptions& options, FieldLookup lookup) {
   const FittedProposal f = fit_proposal(grid, previous, u, mode, scan, likelihood, motion, options, lookup);
-  ProposalDraw out;
+  ProposalMean out;
   out.mean = {mode.x + f.mu.x(), mode.y + f.mu.y(), normalize_angle(mode.theta + f.mu.z())};
   out.log_eta = f.log_eta;
   return out;
