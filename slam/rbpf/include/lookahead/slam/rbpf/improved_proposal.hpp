@@ -10,9 +10,9 @@
 // particles' spread enters as a motion-model draw of the scan matcher's start, not as a draw
 // from N(mu, Sigma) (eq. (13)). Sigma is fitted on 27 points a few centimetres apart, on a
 // tempered likelihood nearly flat across them, so such a draw's spread is the lattice's, not
-// the posterior's; every particle wrote that noise into its map and matched the next scans
-// against it, and the whole cloud drifted with it, out of reach of any weighting (MIT CSAIL:
-// headings 0.4 deg apart, the cloud 3 cm wide, while the error grew to 0.3 m).
+// the posterior's; every particle would write that noise into its map and match the next
+// scans against it, and the whole cloud drifts with it, out of reach of any weighting (MIT
+// CSAIL: headings 0.4 deg apart, the cloud 3 cm wide, while the error grows to 0.3 m).
 #pragma once
 
 #include <array>
