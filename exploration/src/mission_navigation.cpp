@@ -28,6 +28,12 @@ bool long_way_round(const planner::Path& replanned, const planner::PathFollower&
   return planner::path_length(replanned) > kLongWayRound * blocked.remaining_length() + kLongWayRoundSlack;
 }
 
+// A replan this much longer than the blocked path's rest [m] is another way round, not the
+// same way past a flickering cell.
+bool other_way_round(const planner::Path& replanned, double blocked_rest) {
+  return planner::path_length(replanned) > blocked_rest + kLongWayRoundSlack;
+}
+
 }  // namespace
 
 void Mission::decide() {
@@ -128,7 +134,13 @@ bool Mission::replan_current_goal() {
   const Selection s = replan_to_goal(selection_inputs(), *goal_);
   count(s);
   const bool planned = s.outcome == SelectionOutcome::kPlanned;
-  const bool keep = blocked && (!planned || long_way_round(s.path, *blocked));
+  // One way round per goal: in a room with two narrow doors the margin closes whichever
+  // door the robot walks up to, and a replan through the other, taken each time, sends the
+  // robot to and fro between them until the time limit. After the first swap the robot
+  // stays on the way it took; the body still guards the kept path, and the stuck clock the
+  // goal.
+  const bool keep = blocked && (!planned || went_round_ || long_way_round(s.path, *blocked));
+  if (blocked && planned && !keep && other_way_round(s.path, blocked_rest)) went_round_ = true;
   spdlog::debug("t {:.1f}: replan to ({:.2f}, {:.2f}): {}{}", time_, goal_->x, goal_->y, planned ? "planned" : "failed",
                 keep ? "; the path the margin closed is kept" : "");
   // The stuck clock keeps running: a goal that keeps getting blocked is given up in time.
@@ -249,6 +261,7 @@ void Mission::follow(const Selection& s, const planner::FollowerOptions& trackin
   goal_ = planner::Point2{s.goal_x, s.goal_y};
   follower_ = std::make_unique<planner::PathFollower>(s.path, tracking);
   kept_on_body_ = false;
+  went_round_ = false;
   escape_.arm();
   const slam::Pose2 p = estimate();
   stuck_clock_.start(time_, std::hypot(s.goal_x - p.x, s.goal_y - p.y), planner::path_length(s.path), path_length_);

@@ -169,6 +169,9 @@ class Mission {
   /// The current path is checked with the body alone: the safety margin closed it, and the
   /// replan would have taken the long way round (a door the margin flickers on).
   bool kept_on_body_ = false;
+  /// Since its goal was chosen, a path the margin closed was once replaced by another way
+  /// round: later paths the margin closes on the way to that goal are kept.
+  bool went_round_ = false;
   /// A path the margin closed while the body still fits along it: the replan decides.
   std::unique_ptr<planner::PathFollower> margin_blocked_;
   std::optional<planner::Point2> goal_;
