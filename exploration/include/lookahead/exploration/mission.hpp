@@ -167,7 +167,8 @@ class Mission {
   planner::Costmap costmap_;
   std::unique_ptr<planner::PathFollower> follower_;
   /// The current path is checked with the body alone: the safety margin closed it, and the
-  /// replan would have taken the long way round (a door the margin flickers on).
+  /// replan would have taken the long way round (a door the margin flickers on) or swapped
+  /// back after the robot already went round once (went_round_).
   bool kept_on_body_ = false;
   /// Since its goal was chosen, a path the margin closed was once replaced by another way
   /// round: later paths the margin closes on the way to that goal are kept.
