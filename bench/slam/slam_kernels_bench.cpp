@@ -178,8 +178,8 @@ void BM_ImprovedProposal_Lookahead(benchmark::State& state) {
   const Pose2 previous = f.log.scans[kMapScans - 3].odometry;
   const Pose2 u = previous.between(f.probe.odometry);
   for (auto _ : state) {
-    benchmark::DoNotOptimize(improved_proposal_at_mean(f.grid, previous, u, f.probe.odometry, scan, model, motion, {},
-                                                       FieldLookup::kBilinear));
+    benchmark::DoNotOptimize(
+        improved_proposal(f.grid, previous, u, f.probe.odometry, scan, model, motion, {}, FieldLookup::kBilinear));
   }
 }
 BENCHMARK(BM_ImprovedProposal_Lookahead)->Unit(benchmark::kMicrosecond);

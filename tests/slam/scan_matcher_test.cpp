@@ -108,8 +108,7 @@ TEST_F(ScanMatcherTest, ProposalMeanLiesOnTheTruth) {
   const Pose2 previous = truth.compose(u.inverse());
   for (const Pose2 off : {Pose2{0.02, 0.0, 0.0}, Pose2{0.0, -0.02, 0.0}, Pose2{0.0, 0.0, 0.01}}) {
     const Pose2 mode = truth.compose(off);
-    const ProposalMean d =
-        improved_proposal_at_mean(grid, previous, u, mode, scan, model, motion, {}, FieldLookup::kBilinear);
+    const ProposalMean d = improved_proposal(grid, previous, u, mode, scan, model, motion, {}, FieldLookup::kBilinear);
     ASSERT_TRUE(std::isfinite(d.log_eta));
     EXPECT_LT(std::hypot(d.mean.x - truth.x, d.mean.y - truth.y), 0.02);
     EXPECT_LT(std::abs(normalize_angle(d.mean.theta - truth.theta)), 0.01);

@@ -47,16 +47,9 @@ FittedProposal fit_proposal(const OccupancyGrid& grid, const Pose2& previous, co
 
 }  // namespace
 
-Pose2 improved_proposal_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
-                             const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
-                             const OdometryMotionModel& motion, const ProposalOptions& options, FieldLookup lookup) {
-  return improved_proposal_at_mean(grid, previous, u, mode, scan, likelihood, motion, options, lookup).mean;
-}
-
-ProposalMean improved_proposal_at_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u,
-                                       const Pose2& mode, const PreparedScan& scan,
-                                       const LikelihoodFieldModel& likelihood, const OdometryMotionModel& motion,
-                                       const ProposalOptions& options, FieldLookup lookup) {
+ProposalMean improved_proposal(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
+                               const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
+                               const OdometryMotionModel& motion, const ProposalOptions& options, FieldLookup lookup) {
   const FittedProposal f = fit_proposal(grid, previous, u, mode, scan, likelihood, motion, options, lookup);
   ProposalMean out;
   out.mean = {mode.x + f.mu.x(), mode.y + f.mu.y(), normalize_angle(mode.theta + f.mu.z())};

@@ -16,8 +16,8 @@ bool draw_particle(const ParticleStepModels& m, const OccupancyGrid& map, Pose2&
   if (match_scan) match = m.matcher.match(map, start, prepared, m.motion.rotation_sigma(u));
   bool failed = false;
   if (match_scan && match.ok) {
-    const ProposalMean d = improved_proposal_at_mean(map, pose, u, match.pose, prepared, m.likelihood, m.motion,
-                                                     m.options.proposal, FieldLookup::kBilinear);
+    const ProposalMean d = improved_proposal(map, pose, u, match.pose, prepared, m.likelihood, m.motion,
+                                             m.options.proposal, FieldLookup::kBilinear);
     pose = d.mean;
     if (estimate) *estimate = d.mean;
     log_weight += m.options.weight_exponent * d.log_eta;

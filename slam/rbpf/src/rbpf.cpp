@@ -128,8 +128,9 @@ std::optional<Pose2> Rbpf::track_on(const Particle& p, const Pose2& guess, const
   const MatchResult m = matcher_.match(p.map, guess, prepared, 0.0, FieldLookup::kBilinear);
   if (!m.ok) return std::nullopt;
   const Pose2 u = last_update_odometry_.between(scan.odometry);
-  return improved_proposal_mean(p.map, p.pose, u, m.pose, prepared, likelihood_, motion_, options_.proposal,
-                                FieldLookup::kBilinear);
+  return improved_proposal(p.map, p.pose, u, m.pose, prepared, likelihood_, motion_, options_.proposal,
+                           FieldLookup::kBilinear)
+      .mean;
 }
 
 bool Rbpf::motion_threshold_met(const LaserScan& scan) const {

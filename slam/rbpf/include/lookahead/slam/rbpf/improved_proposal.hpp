@@ -51,17 +51,10 @@ struct ProposalMean {
   double log_eta = 0.0;  ///< log of the weight factor eta
 };
 
-/// mu alone (eq. (12)), for a pose estimate that is not a particle (the scans tracked between
-/// updates); `lookup` is how the kernel points read the distance field.
-Pose2 improved_proposal_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
-                             const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
-                             const OdometryMotionModel& motion, const ProposalOptions& options, FieldLookup lookup);
-
-/// A particle's step: mu (eq. (12)) and the weight factor eta (eq. (14)), with the kernel
-/// points read through `lookup`.
-ProposalMean improved_proposal_at_mean(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u,
-                                       const Pose2& mode, const PreparedScan& scan,
-                                       const LikelihoodFieldModel& likelihood, const OdometryMotionModel& motion,
-                                       const ProposalOptions& options, FieldLookup lookup);
+/// mu (eq. (12)) and the weight factor eta (eq. (14)), with the kernel points read through
+/// `lookup`: a particle's step, and the pose of the scans tracked between updates.
+ProposalMean improved_proposal(const OccupancyGrid& grid, const Pose2& previous, const Pose2& u, const Pose2& mode,
+                               const PreparedScan& scan, const LikelihoodFieldModel& likelihood,
+                               const OdometryMotionModel& motion, const ProposalOptions& options, FieldLookup lookup);
 
 }  // namespace lookahead::slam
